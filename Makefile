@@ -1,0 +1,44 @@
+# Thin wrapper around CMake (in the style of Neovim's): `make demo` and `make test` are the
+# two commands of the README's quick start. Each installs missing Debian packages first.
+BUILD_DIR     ?= build
+BUILD_TYPE    ?= Release
+JOBS          ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_FLAGS   ?=
+DEMO_DIR      ?= gearkit-demo
+GENERATOR     := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
+
+.PHONY: all deps configure build demo test test-sanitize bench install clean
+
+all: build
+
+deps:
+	@./scripts/setup-deps.sh
+
+configure: deps
+	@if [ ! -f $(BUILD_DIR)/CMakeCache.txt ]; then \
+	  cmake -S . -B $(BUILD_DIR) $(GENERATOR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS); \
+	fi
+
+build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+demo: build
+	$(BUILD_DIR)/bin/gearkit demo --output $(DEMO_DIR)
+
+test: build
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
+
+# The CI's second configuration: AddressSanitizer + UndefinedBehaviorSanitizer, warnings as errors.
+test-sanitize:
+	$(MAKE) test BUILD_DIR=build-sanitize BUILD_TYPE=RelWithDebInfo \
+	  CMAKE_FLAGS="-DGEARKIT_SANITIZE=ON -DGEARKIT_WERROR=ON"
+
+bench: deps
+	cmake -S . -B build-bench $(GENERATOR) -DCMAKE_BUILD_TYPE=Release -DGEARKIT_BUILD_BENCH=ON -DGEARKIT_BUILD_TESTS=OFF
+	cmake --build build-bench -j $(JOBS)
+
+install: build
+	cmake --install $(BUILD_DIR) $(if $(PREFIX),--prefix $(PREFIX))
+
+clean:
+	rm -rf $(BUILD_DIR) build-sanitize build-bench

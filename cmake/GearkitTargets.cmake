@@ -1,0 +1,70 @@
+# Helpers that keep every library, plugin and test suite built the same way.
+# Sources are globbed (CONFIGURE_DEPENDS) so that adding a file to src/ needs no CMake edit.
+
+# gearkit_add_library(<name> DEPS <public deps...> [PRIVATE <private deps...>])
+#   Builds lib<name>/src/*.cpp as the shared library gearkit_<name> (alias gearkit::<name>)
+#   with public headers in lib<name>/include.
+function(gearkit_add_library name)
+  cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE" ${ARGN})
+  file(GLOB _src CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp")
+  if(NOT _src)
+    # A library whose first sources are still being written: headers only for now.
+    add_library(gearkit_${name} INTERFACE)
+    add_library(gearkit::${name} ALIAS gearkit_${name})
+    target_include_directories(gearkit_${name} INTERFACE
+      $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+    target_link_libraries(gearkit_${name} INTERFACE ${ARG_DEPS})
+    set_target_properties(gearkit_${name} PROPERTIES EXPORT_NAME ${name})
+    set_property(GLOBAL APPEND PROPERTY GEARKIT_LIBRARIES gearkit_${name})
+    install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    return()
+  endif()
+  add_library(gearkit_${name} SHARED ${_src})
+  add_library(gearkit::${name} ALIAS gearkit_${name})
+  set_target_properties(gearkit_${name} PROPERTIES EXPORT_NAME ${name}
+                        VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+  target_include_directories(gearkit_${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(gearkit_${name} PUBLIC ${ARG_DEPS} PRIVATE gearkit_build_flags ${ARG_PRIVATE})
+  set_property(GLOBAL APPEND PROPERTY GEARKIT_LIBRARIES gearkit_${name})
+  install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endfunction()
+
+# gearkit_add_plugin(<name> DEPS <deps...>)
+#   Builds plugins/<name>/*.cpp as the MODULE gearkit_plugin_<name>, placed next to the executable
+#   (bin/plugins) in the build tree and in lib/gearkit/plugins once installed.
+function(gearkit_add_plugin name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB _src CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
+  if(NOT _src)
+    message(STATUS "gearkit: plugin '${name}' has no sources yet; skipped")
+    return()
+  endif()
+  add_library(gearkit_plugin_${name} MODULE ${_src})
+  set_target_properties(gearkit_plugin_${name} PROPERTIES
+    PREFIX "" OUTPUT_NAME "gearkit-${name}"
+    LIBRARY_OUTPUT_DIRECTORY "${GEARKIT_PLUGIN_BUILD_DIR}"
+    INSTALL_RPATH "$ORIGIN/../..")
+  target_link_libraries(gearkit_plugin_${name} PRIVATE gearkit::kin gearkit::io gearkit_build_flags ${ARG_DEPS})
+  set_property(GLOBAL APPEND PROPERTY GEARKIT_PLUGINS gearkit_plugin_${name})
+  install(TARGETS gearkit_plugin_${name} LIBRARY DESTINATION ${GEARKIT_PLUGIN_INSTALL_DIR})
+endfunction()
+
+# gearkit_add_test_suite(<name> DEPS <deps...>)
+#   Builds tests/<name>/*.cpp into one GoogleTest executable registered with ctest.
+function(gearkit_add_test_suite name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB _src CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp")
+  if(NOT _src)
+    return()
+  endif()
+  add_executable(test_${name} ${_src})
+  target_link_libraries(test_${name} PRIVATE GTest::gtest_main gearkit_build_flags ${ARG_DEPS})
+  target_compile_definitions(test_${name} PRIVATE
+    GEARKIT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    GEARKIT_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    GEARKIT_EXE="$<TARGET_FILE:gearkit>"
+    GEARKIT_SEEDS_DIR="${PROJECT_SOURCE_DIR}/../shared/seeds")
+  gtest_discover_tests(test_${name} DISCOVERY_MODE PRE_TEST PROPERTIES LABELS ${name})
+endfunction()

@@ -1,0 +1,38 @@
+#pragma once
+// Shared command-line handling for the built-in and plugin commands (Boost.Program_options):
+// the common options, --help, and option errors turned into InputError.
+#include <gearkit/io/report.hpp>
+#include <boost/program_options.hpp>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace gearkit::io {
+
+namespace po = boost::program_options;
+
+/// Options every command has.
+struct CommonOptions {
+  Format format = Format::text;
+  std::string output;  ///< --output FILE: the report goes to FILE (atomically) instead of stdout
+  bool strict = false; ///< --strict: warnings make the exit status 3
+};
+
+/// Adds --help, --format, --output and --strict to `desc`.
+void add_common_options(po::options_description& desc);
+
+/// Parses `args` (the words after the command name). Returns false if --help was given, after
+/// printing "usage" and `desc` to `out`; the caller then returns 0.
+/// @throws InputError for unknown options, missing values, bad --format, extra words.
+bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
+                        const po::positional_options_description& positional, po::variables_map& vm,
+                        std::string_view usage, std::ostream& out);
+
+/// The common options from a parsed command line.
+CommonOptions common_options(const po::variables_map& vm);
+
+/// Writes the report to stdout or --output and returns the exit status (0, or 3 under --strict
+/// when there are warnings).
+int emit(const Report& report, const CommonOptions& options, std::ostream& out);
+
+}  // namespace gearkit::io

@@ -1,0 +1,83 @@
+#pragma once
+// Quantities with units, as people type them in model files and options: "9 mm", "20 deg",
+// "2950 rpm", "100 kW", "36.6 N*m", "0.1 kg*m^2". Parsing returns SI values checked against the
+// dimension the field expects; a bare number takes the field's documented default unit.
+//
+// Grammar: NUMBER [UNIT], UNIT = FACTOR (('*' | '/') FACTOR)*, FACTOR = SYMBOL ['^' INTEGER].
+// The number is a decimal with optional sign, fraction and exponent ("1.5e-3"); space between
+// number and unit is optional ("9mm"). A decimal comma, hex, nan, inf and unknown symbols are
+// rejected. Units are case-sensitive ("MM" is not a unit).
+#include <boost/units/quantity.hpp>
+#include <boost/units/systems/si.hpp>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace gearkit::io {
+
+/// The physical quantity a field expects.
+enum class Quantity {
+  dimensionless,
+  length,
+  angle,
+  time,
+  mass,
+  force,
+  torque,
+  energy,
+  power,
+  velocity,
+  acceleration,
+  angular_velocity,
+  angular_acceleration,
+  moment_of_inertia,
+  stiffness,        ///< linear spring rate, N/m
+  pressure,
+};
+
+/// Human name of a quantity ("a length", "an angular velocity") for messages.
+std::string_view describe(Quantity q);
+
+/// Thrown for malformed or mismatched quantities. The message says what was expected and
+/// what was found but not where: callers add the place (option or file:line:column).
+class QuantityError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+  ~QuantityError() override;
+};
+
+/// Parses `text` into the SI value of quantity `expected` (m, rad, s, kg, N, N*m, J, W, m/s,
+/// m/s^2, rad/s, rad/s^2, kg*m^2, N/m, Pa; 1 for dimensionless).
+/// @param default_unit unit symbol applied to a bare number (e.g. "mm", "deg"); must itself be
+///        valid for `expected`. Empty means a bare number is already SI.
+/// @throws QuantityError if the text is malformed, names an unknown unit, or has the wrong
+///         dimension (a length where an angle is expected).
+double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit);
+
+/// The SI factor of a unit expression such as "mm", "rpm" or "kg*m^2", checked against
+/// `expected`. @throws QuantityError as parse_quantity_si.
+double unit_factor_si(std::string_view unit, Quantity expected);
+
+// Typed front ends on Boost.Units for code that wants dimensional safety at compile time.
+namespace si = boost::units::si;
+using Length = boost::units::quantity<si::length>;
+using Angle = boost::units::quantity<si::plane_angle>;
+using AngularVelocity = boost::units::quantity<si::angular_velocity>;
+using Power = boost::units::quantity<si::power>;
+using Torque = boost::units::quantity<si::torque>;
+using MomentOfInertia = boost::units::quantity<si::moment_of_inertia>;
+using Mass = boost::units::quantity<si::mass>;
+using Force = boost::units::quantity<si::force>;
+using Time = boost::units::quantity<si::time>;
+
+Length parse_length(std::string_view text, std::string_view default_unit = "mm");
+Angle parse_angle(std::string_view text, std::string_view default_unit = "deg");
+AngularVelocity parse_angular_velocity(std::string_view text, std::string_view default_unit = "rpm");
+Power parse_power(std::string_view text, std::string_view default_unit = "W");
+Torque parse_torque(std::string_view text, std::string_view default_unit = "N*m");
+MomentOfInertia parse_moment_of_inertia(std::string_view text, std::string_view default_unit = "kg*m^2");
+Mass parse_mass(std::string_view text, std::string_view default_unit = "kg");
+Force parse_force(std::string_view text, std::string_view default_unit = "N");
+Time parse_time(std::string_view text, std::string_view default_unit = "s");
+
+}  // namespace gearkit::io

@@ -1,0 +1,42 @@
+#pragma once
+// One result, many formats: a command fills a Report (titled tables + warnings + a JSON object)
+// and render() prints it as text, JSON, CSV or Markdown.
+#include <nlohmann/json.hpp>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gearkit::io {
+
+enum class Format { text, json, csv, md };
+
+/// "text" | "json" | "csv" | "md". @throws InputError naming option --format otherwise.
+Format parse_format(std::string_view s);
+
+/// A table of already-formatted cells. Units belong in the header ("d_a [mm]").
+struct Table {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+
+  void add_row(std::vector<std::string> row) { rows.push_back(std::move(row)); }
+};
+
+struct Report {
+  std::string title;                  ///< first line of text/md output
+  std::vector<Table> tables;
+  std::vector<std::string> notes;     ///< informative lines (text/md only)
+  std::vector<std::string> warnings;  ///< engineering problems; also json["warnings"]
+  nlohmann::json json = nlohmann::json::object();  ///< keys carry unit suffixes (d_mm, omega_rad_s)
+};
+
+/// Renders the report. JSON output is `json` with "warnings" added. CSV writes each table
+/// (header row first) separated by a blank line, prefixed by "# title" comment lines.
+void render(const Report& report, Format format, std::ostream& out);
+std::string render(const Report& report, Format format);
+
+/// Fixed-point formatting with `digits` decimals; "-0.000" prints as "0.000".
+std::string fixed(double value, int digits);
+
+}  // namespace gearkit::io

@@ -1,0 +1,311 @@
+#include <gearkit/io/quantity.hpp>
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cstdlib>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace gearkit::io {
+
+QuantityError::~QuantityError() = default;
+
+namespace {
+
+// Runtime dimension: exponents of length, mass, time and plane angle. The angle is tracked so
+// that "20 deg" is refused where a length is expected, but a unit without an angle (N*m, 1/s)
+// is accepted where one is expected, since the radian is dimensionless in SI.
+struct Dim {
+  int L = 0, M = 0, T = 0, A = 0;
+  Dim operator+(const Dim& o) const { return {L + o.L, M + o.M, T + o.T, A + o.A}; }
+  Dim operator*(int k) const { return {L * k, M * k, T * k, A * k}; }
+  bool same_LMT(const Dim& o) const { return L == o.L && M == o.M && T == o.T; }
+};
+
+struct UnitDef {
+  std::string_view symbol;
+  double factor;  // to SI
+  Dim dim;
+};
+
+constexpr double pi = std::numbers::pi;
+constexpr double kMetre = 1.0;
+constexpr double kDegree = pi / 180.0;
+
+constexpr Dim kLength{1, 0, 0, 0}, kMassD{0, 1, 0, 0}, kTimeD{0, 0, 1, 0}, kAngleD{0, 0, 0, 1};
+constexpr Dim kForceD{1, 1, -2, 0}, kEnergyD{2, 1, -2, 0}, kPowerD{2, 1, -3, 0}, kPressureD{-1, 1, -2, 0};
+constexpr Dim kNone{0, 0, 0, 0};
+
+const std::array kUnits = {
+    UnitDef{"m", kMetre, kLength},
+    UnitDef{"mm", 1e-3 * kMetre, kLength},
+    UnitDef{"cm", 1e-2 * kMetre, kLength},
+    UnitDef{"km", 1e3 * kMetre, kLength},
+    UnitDef{"um", 1e-6 * kMetre, kLength},
+    UnitDef{"µm", 1e-6 * kMetre, kLength},
+    UnitDef{"in", 0.0254, kLength},
+    UnitDef{"ft", 0.3048, kLength},
+    UnitDef{"rad", 1.0, kAngleD},
+    UnitDef{"deg", kDegree, kAngleD},
+    UnitDef{"°", kDegree, kAngleD},
+    UnitDef{"rev", 2 * pi, kAngleD},
+    UnitDef{"turn", 2 * pi, kAngleD},
+    UnitDef{"s", 1.0, kTimeD},
+    UnitDef{"ms", 1e-3, kTimeD},
+    UnitDef{"min", 60.0, kTimeD},
+    UnitDef{"h", 3600.0, kTimeD},
+    UnitDef{"kg", 1.0, kMassD},
+    UnitDef{"g", 1e-3, kMassD},
+    UnitDef{"t", 1e3, kMassD},
+    UnitDef{"N", 1.0, kForceD},
+    UnitDef{"kN", 1e3, kForceD},
+    UnitDef{"MN", 1e6, kForceD},
+    UnitDef{"J", 1.0, kEnergyD},
+    UnitDef{"kJ", 1e3, kEnergyD},
+    UnitDef{"MJ", 1e6, kEnergyD},
+    UnitDef{"Wh", 3600.0, kEnergyD},
+    UnitDef{"kWh", 3.6e6, kEnergyD},
+    UnitDef{"W", 1.0, kPowerD},
+    UnitDef{"kW", 1e3, kPowerD},
+    UnitDef{"MW", 1e6, kPowerD},
+    UnitDef{"hp", 745.69987158227022, kPowerD},  // mechanical horsepower
+    UnitDef{"CV", 735.49875, kPowerD},           // metric horsepower (caballo de vapor)
+    UnitDef{"Pa", 1.0, kPressureD},
+    UnitDef{"kPa", 1e3, kPressureD},
+    UnitDef{"MPa", 1e6, kPressureD},
+    UnitDef{"GPa", 1e9, kPressureD},
+    UnitDef{"bar", 1e5, kPressureD},
+    UnitDef{"rpm", 2 * pi / 60.0, Dim{0, 0, -1, 1}},
+    UnitDef{"rps", 2 * pi, Dim{0, 0, -1, 1}},
+};
+
+Dim dimension_of(Quantity q) {
+  switch (q) {
+    case Quantity::dimensionless: return kNone;
+    case Quantity::length: return kLength;
+    case Quantity::angle: return kAngleD;
+    case Quantity::time: return kTimeD;
+    case Quantity::mass: return kMassD;
+    case Quantity::force: return kForceD;
+    case Quantity::torque: return kEnergyD;
+    case Quantity::energy: return kEnergyD;
+    case Quantity::power: return kPowerD;
+    case Quantity::velocity: return {1, 0, -1, 0};
+    case Quantity::acceleration: return {1, 0, -2, 0};
+    case Quantity::angular_velocity: return {0, 0, -1, 1};
+    case Quantity::angular_acceleration: return {0, 0, -2, 1};
+    case Quantity::moment_of_inertia: return {2, 1, 0, 0};
+    case Quantity::stiffness: return {0, 1, -2, 0};
+    case Quantity::pressure: return kPressureD;
+  }
+  return kNone;
+}
+
+bool compatible(const Dim& found, const Dim& expected) {
+  if (!found.same_LMT(expected)) return false;
+  return found.A == 0 || found.A == expected.A;
+}
+
+std::string quoted(std::string_view s) { return fmt::format("'{}'", s); }
+
+bool is_space(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+const UnitDef* find_unit(std::string_view symbol) {
+  for (const auto& u : kUnits)
+    if (u.symbol == symbol) return &u;
+  return nullptr;
+}
+
+struct ParsedUnit {
+  double factor = 1.0;
+  Dim dim;
+};
+
+// UNIT = FACTOR (('*' | '/') FACTOR)*, FACTOR = SYMBOL ['^' INTEGER] | '1'
+ParsedUnit parse_unit(std::string_view text, std::string_view whole) {
+  ParsedUnit result;
+  std::size_t i = 0;
+  int sign = +1;
+  bool expect_factor = true;
+  while (i < text.size()) {
+    if (!expect_factor) {
+      char op = text[i];
+      if (op == '*' || op == '/') {
+        sign = op == '*' ? +1 : -1;
+        ++i;
+        expect_factor = true;
+        continue;
+      }
+      throw QuantityError(fmt::format("expected '*' or '/' between units, found {} in {}",
+                                      quoted(text.substr(i, 1)), quoted(whole)));
+    }
+    // A symbol: letters, the degree sign or micro sign (UTF-8 bytes), or the digit 1 (as in 1/s).
+    std::size_t start = i;
+    if (text[i] == '1') {
+      ++i;
+    } else {
+      while (i < text.size() && (std::isalpha(static_cast<unsigned char>(text[i])) ||
+                                 static_cast<unsigned char>(text[i]) >= 0x80)) {
+        ++i;
+      }
+    }
+    std::string_view symbol = text.substr(start, i - start);
+    if (symbol.empty())
+      throw QuantityError(fmt::format("expected a unit symbol, found {} in {}",
+                                      quoted(text.substr(i, 1)), quoted(whole)));
+    int power = 1;
+    if (i < text.size() && text[i] == '^') {
+      ++i;
+      std::size_t pstart = i;
+      if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+      while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+      std::string_view ptext = text.substr(pstart, i - pstart);
+      if (ptext.empty() || ptext == "-" || ptext == "+")
+        throw QuantityError(fmt::format("expected an integer exponent after '^' in {}", quoted(whole)));
+      std::from_chars(ptext.data() + (ptext[0] == '+' ? 1 : 0), ptext.data() + ptext.size(), power);
+      if (power == 0 || std::abs(power) > 4)
+        throw QuantityError(fmt::format("expected an exponent from -4 to 4, found {} in {}", ptext,
+                                        quoted(whole)));
+    }
+    if (symbol == "1") {
+      if (power != 1) throw QuantityError(fmt::format("expected a unit symbol, found '1^' in {}", quoted(whole)));
+    } else {
+      const UnitDef* u = find_unit(symbol);
+      if (!u) throw QuantityError(fmt::format("unknown unit {} in {}", quoted(symbol), quoted(whole)));
+      result.factor *= std::pow(u->factor, sign * power);
+      result.dim = result.dim + u->dim * (sign * power);
+    }
+    expect_factor = false;
+  }
+  if (expect_factor && !text.empty())
+    throw QuantityError(fmt::format("expected a unit after '{}' in {}", text.back(), quoted(whole)));
+  return result;
+}
+
+// The number at the start of `text`: optional sign, digits, fraction, exponent. Returns the
+// characters consumed, 0 if there is no number.
+std::size_t scan_number(std::string_view text) {
+  std::size_t i = 0;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  std::size_t digits = 0;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i, ++digits;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i, ++digits;
+  }
+  if (digits == 0) return 0;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    std::size_t j = i + 1;
+    if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+    std::size_t exp_digits = 0;
+    while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j, ++exp_digits;
+    if (exp_digits > 0) i = j;
+  }
+  return i;
+}
+
+}  // namespace
+
+std::string_view describe(Quantity q) {
+  switch (q) {
+    case Quantity::dimensionless: return "a plain number";
+    case Quantity::length: return "a length";
+    case Quantity::angle: return "an angle";
+    case Quantity::time: return "a time";
+    case Quantity::mass: return "a mass";
+    case Quantity::force: return "a force";
+    case Quantity::torque: return "a torque";
+    case Quantity::energy: return "an energy";
+    case Quantity::power: return "a power";
+    case Quantity::velocity: return "a velocity";
+    case Quantity::acceleration: return "an acceleration";
+    case Quantity::angular_velocity: return "an angular velocity";
+    case Quantity::angular_acceleration: return "an angular acceleration";
+    case Quantity::moment_of_inertia: return "a moment of inertia";
+    case Quantity::stiffness: return "a stiffness";
+    case Quantity::pressure: return "a pressure";
+  }
+  return "a quantity";
+}
+
+double unit_factor_si(std::string_view unit, Quantity expected) {
+  ParsedUnit u = parse_unit(trim(unit), unit);
+  if (!compatible(u.dim, dimension_of(expected)))
+    throw QuantityError(fmt::format("expected {}, found unit {}", describe(expected), quoted(trim(unit))));
+  return u.factor;
+}
+
+double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit) {
+  std::string_view t = trim(text);
+  if (t.empty()) throw QuantityError(fmt::format("expected {}, found an empty value", describe(expected)));
+  std::size_t n = scan_number(t);
+  if (n == 0)
+    throw QuantityError(fmt::format("expected {} such as '{}', found {}", describe(expected),
+                                    default_unit.empty() ? "1.5" : fmt::format("12 {}", default_unit),
+                                    quoted(t)));
+  std::string number(t.substr(0, n));
+  std::string_view rest = trim(t.substr(n));
+  if (!rest.empty() && rest.front() == ',')
+    throw QuantityError(fmt::format("expected a decimal point, found a comma in {}", quoted(t)));
+  if (!rest.empty() && (rest.front() == 'x' || rest.front() == 'X') && number == "0")
+    throw QuantityError(fmt::format("expected a decimal number, found {}", quoted(t)));
+  errno = 0;
+  char* end = nullptr;
+  double value = std::strtod(number.c_str(), &end);
+  if (!std::isfinite(value) || errno == ERANGE)
+    throw QuantityError(fmt::format("expected a finite number, found {}", quoted(t)));
+  double factor = 1.0;
+  if (rest.empty()) {
+    if (!default_unit.empty()) factor = unit_factor_si(default_unit, expected);
+  } else {
+    ParsedUnit u = parse_unit(rest, t);
+    if (!compatible(u.dim, dimension_of(expected)))
+      throw QuantityError(fmt::format("expected {}, found {} (unit '{}')", describe(expected), quoted(t), rest));
+    factor = u.factor;
+  }
+  double si_value = value * factor;
+  if (!std::isfinite(si_value))
+    throw QuantityError(fmt::format("expected a finite number, found {}", quoted(t)));
+  return si_value;
+}
+
+Length parse_length(std::string_view text, std::string_view default_unit) {
+  return Length::from_value(parse_quantity_si(text, Quantity::length, default_unit));
+}
+Angle parse_angle(std::string_view text, std::string_view default_unit) {
+  return Angle::from_value(parse_quantity_si(text, Quantity::angle, default_unit));
+}
+AngularVelocity parse_angular_velocity(std::string_view text, std::string_view default_unit) {
+  return AngularVelocity::from_value(parse_quantity_si(text, Quantity::angular_velocity, default_unit));
+}
+Power parse_power(std::string_view text, std::string_view default_unit) {
+  return Power::from_value(parse_quantity_si(text, Quantity::power, default_unit));
+}
+Torque parse_torque(std::string_view text, std::string_view default_unit) {
+  return Torque::from_value(parse_quantity_si(text, Quantity::torque, default_unit));
+}
+MomentOfInertia parse_moment_of_inertia(std::string_view text, std::string_view default_unit) {
+  return MomentOfInertia::from_value(parse_quantity_si(text, Quantity::moment_of_inertia, default_unit));
+}
+Mass parse_mass(std::string_view text, std::string_view default_unit) {
+  return Mass::from_value(parse_quantity_si(text, Quantity::mass, default_unit));
+}
+Force parse_force(std::string_view text, std::string_view default_unit) {
+  return Force::from_value(parse_quantity_si(text, Quantity::force, default_unit));
+}
+Time parse_time(std::string_view text, std::string_view default_unit) {
+  return Time::from_value(parse_quantity_si(text, Quantity::time, default_unit));
+}
+
+}  // namespace gearkit::io
