@@ -61,6 +61,7 @@ function(gearkit_add_test_suite name)
   endif()
   add_executable(test_${name} ${_src})
   target_link_libraries(test_${name} PRIVATE GTest::gtest_main gearkit_build_flags ${ARG_DEPS})
+  target_include_directories(test_${name} PRIVATE "${PROJECT_SOURCE_DIR}/tests/support")
   target_compile_definitions(test_${name} PRIVATE
     GEARKIT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     GEARKIT_BINARY_DIR="${PROJECT_BINARY_DIR}"

@@ -80,7 +80,12 @@ void PluginHost::load(const fs::path& file) {
     const char* why = dlerror();
     throw PluginError(file, std::string("not a loadable plugin module: ") + (why ? why : "unknown reason"));
   }
+  // What the plugin registered holds code from the module (std::function targets, their
+  // destructors): it must be destroyed before the module is unloaded.
+  CollectingRegistrar reg;
   auto reject = [&](const std::string& reason) {
+    reg.commands.clear();
+    reg.elements.clear();
     dlclose(handle);
     throw PluginError(file, reason);
   };
@@ -97,7 +102,6 @@ void PluginHost::load(const fs::path& file) {
   const PluginInfo* info = info_fn();
   if (!info || !info->name || !*info->name) reject("gearkit_plugin_info() gave no plugin name");
 
-  CollectingRegistrar reg;
   try {
     register_fn(reg);
   } catch (const std::exception& e) {

@@ -28,7 +28,7 @@ std::string to_string(const SourceMark& mark);
 /// Throws InputError("<mark>: <message>").
 [[noreturn]] void fail_at(const SourceMark& mark, std::string_view message);
 
-/// Throws InputError("option '--<option>': <message>").
+/// Throws InputError("option '<option>': <message>"); pass the option as typed ("--dxf").
 [[noreturn]] void fail_option(std::string_view option, std::string_view message);
 
 }  // namespace gearkit::io

@@ -3,6 +3,7 @@
 // follower). The solver sees an element only through the constraint interface: its rows of
 // Phi, Phi_q, Phi_t and gamma (see constraint.hpp). The element's own description in a
 // mechanism file is read by the plugin that owns the type.
+#include <gearkit/kin/joints.hpp>
 #include <functional>
 #include <memory>
 #include <string>
@@ -19,8 +20,15 @@ class Constraint;
 struct ElementRequest {
   const YAML::Node& node;   ///< the element's mapping in the mechanism file
   const std::string& file;  ///< the file, for error marks
-  /// Index of a body by name; throws gearkit::io::InputError for an unknown name.
+  /// Index of a body by name (kGround for "ground"); throws gearkit::io::InputError for an
+  /// unknown name.
   std::function<int(const std::string& body_name)> body_index;
+  /// Resolves a "link.point" scalar node to the body and the point's local coordinates [m];
+  /// throws gearkit::io::InputError (with the node's file:line:column) if either is unknown.
+  std::function<BodyPoint(const YAML::Node& reference)> body_point;
+  /// The drawn (initial guess) angle of a body [rad]; 0 for the ground. Elements whose
+  /// equations hold up to a constant (a gear mesh's phase) take it from the drawing.
+  std::function<double(int body)> angle_guess;
 };
 
 using ElementFactory = std::function<std::unique_ptr<Constraint>(const ElementRequest&)>;

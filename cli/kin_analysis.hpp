@@ -1,0 +1,40 @@
+#pragma once
+// `gearkit kin`: the analysis results of one run, independent of how they are printed.
+#include <gearkit/io/mechanism_yaml.hpp>
+#include <gearkit/kin/dof.hpp>
+#include <gearkit/kin/kinetostatics.hpp>
+#include <gearkit/kin/sweep.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gearkit::cli {
+
+/// Everything computed at one input value.
+struct KinPosition {
+  double input = 0.0;  ///< [rad or m]
+  Eigen::VectorXd q, qd, qdd;
+  std::vector<kin::OutputValue> outputs;
+  std::vector<double> output_ratios;       ///< d(output)/d(input)
+  std::optional<double> transmission_angle;  ///< [rad], four-bars only
+  std::optional<kin::ForceAnalysis> forces;  ///< when the model has loads
+};
+
+struct KinAnalysis {
+  kin::DofReport dof;
+  int driver = 0;
+  std::vector<KinPosition> positions;
+  std::vector<kin::DeadPoint> dead_points;
+  std::vector<kin::OutputExtreme> extremes;
+  std::vector<std::string> warnings;
+  std::vector<std::optional<Eigen::Vector2d>> instant_centres;  ///< per body, single position only
+  bool single = false;
+};
+
+/// Fills a KinPosition from a solved Data (positions, velocities, accelerations done).
+KinPosition describe_position(const io::Mechanism& mech, kin::Data& data, int driver, double input);
+
+/// The SVG animation of the mechanism through the positions (SMIL, loops forever).
+std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis);
+
+}  // namespace gearkit::cli

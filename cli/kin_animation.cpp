@@ -1,0 +1,123 @@
+// The animated SVG of `gearkit kin --animate`: each link drawn through its points, the joints as
+// circles, the ground points as triangles; SMIL <animate> steps through the sweep's positions.
+#include "kin_analysis.hpp"
+
+#include <gearkit/kin/solve.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gearkit::cli {
+
+namespace {
+
+// Names come from the model file: escape them for XML.
+std::string xml(const std::string& text) {
+  std::string r;
+  for (char c : text) {
+    switch (c) {
+      case '&': r += "&amp;"; break;
+      case '<': r += "&lt;"; break;
+      case '>': r += "&gt;"; break;
+      case '"': r += "&quot;"; break;
+      default: r += c;
+    }
+  }
+  return r;
+}
+
+Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
+  return kin::Model::point_position(q, {body, local});
+}
+
+}  // namespace
+
+std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis) {
+  const kin::Model& m = mech.model;
+  // At most 240 frames: the browser interpolates between them.
+  std::vector<const KinPosition*> frames;
+  const std::size_t n = analysis.positions.size();
+  const std::size_t stride = std::max<std::size_t>(1, (n + 239) / 240);
+  for (std::size_t i = 0; i < n; i += stride) frames.push_back(&analysis.positions[i]);
+  if (n > 0 && frames.back() != &analysis.positions.back()) frames.push_back(&analysis.positions.back());
+
+  // Bounding box over every frame (mm), y flipped for SVG.
+  double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+  auto grow = [&](const Eigen::Vector2d& p) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  };
+  for (const auto& [name, p] : m.ground().points) grow(p);
+  for (const KinPosition* f : frames)
+    for (std::size_t b = 0; b < m.bodies().size(); ++b)
+      for (const auto& [name, local] : m.bodies()[b].points) grow(point_at(f->q, static_cast<int>(b), local));
+  if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
+  const double span = std::max({x1 - x0, y1 - y0, 1e-3});
+  const double margin = 0.08 * span;
+  const double scale = 1000.0;  // m -> mm in the drawing's units
+  const double w = (x1 - x0 + 2 * margin) * scale, h = (y1 - y0 + 2 * margin) * scale;
+  const double stroke = span * scale / 150.0;
+  auto X = [&](double x) { return (x - x0 + margin) * scale; };
+  auto Y = [&](double y) { return (y1 - y + margin) * scale; };
+  const double duration = std::max(2.0, 0.04 * static_cast<double>(frames.size()));
+
+  std::string svg = fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.3f} {:.3f}\" width=\"800\" height=\"{:.0f}\">\n"
+      "<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      w, h, 800.0 * h / w, xml(mech.title));
+  static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  for (const auto& [name, p] : m.ground().points) {
+    const double s = 3 * stroke;
+    svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",
+                       X(p.x()), Y(p.y()), X(p.x()) - s, Y(p.y()) + 1.7 * s, X(p.x()) + s, Y(p.y()) + 1.7 * s, xml(name));
+  }
+  for (std::size_t b = 0; b < m.bodies().size(); ++b) {
+    const kin::Body& body = m.bodies()[b];
+    std::vector<std::string> values;
+    for (const KinPosition* f : frames) {
+      std::string pts;
+      for (const auto& [name, local] : body.points) {
+        const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
+        pts += fmt::format("{:.3f},{:.3f} ", X(p.x()), Y(p.y()));
+      }
+      values.push_back(pts);
+    }
+    if (values.empty()) continue;
+    const char* color = palette[b % std::size(palette)];
+    const bool closed = body.points.size() >= 3;
+    svg += fmt::format("<{} points=\"{}\" fill=\"{}\" fill-opacity=\"0.25\" stroke=\"{}\" stroke-width=\"{:.3f}\" "
+                       "stroke-linejoin=\"round\" stroke-linecap=\"round\"><title>{}</title>\n",
+                       closed ? "polygon" : "polyline", values.front(), closed ? color : "none", color, stroke, xml(body.name));
+    if (values.size() > 1)
+      svg += fmt::format("<animate attributeName=\"points\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
+                         duration, fmt::join(values, ";"));
+    svg += closed ? "</polygon>\n" : "</polyline>\n";
+    for (const auto& [name, local] : body.points) {
+      std::vector<std::string> cx, cy;
+      for (const KinPosition* f : frames) {
+        const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
+        cx.push_back(fmt::format("{:.3f}", X(p.x())));
+        cy.push_back(fmt::format("{:.3f}", Y(p.y())));
+      }
+      svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"white\" stroke=\"black\" stroke-width=\"{:.3f}\"><title>{}.{}</title>\n",
+                         cx.front(), cy.front(), 1.2 * stroke, 0.4 * stroke, xml(body.name), xml(name));
+      if (cx.size() > 1) {
+        svg += fmt::format("<animate attributeName=\"cx\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
+                           duration, fmt::join(cx, ";"));
+        svg += fmt::format("<animate attributeName=\"cy\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
+                           duration, fmt::join(cy, ";"));
+      }
+      svg += "</circle>\n";
+    }
+  }
+  svg += "</svg>\n";
+  return svg;
+}
+
+}  // namespace gearkit::cli

@@ -1,0 +1,126 @@
+#pragma once
+// Closed curves as chains of circular arcs (arc splines), fitted to a smooth curve by biarcs,
+// and their offsets computed with CGAL.
+//
+// Why arcs: the offset of a circular arc is the concentric arc, so the offset of an arc spline is
+// exact, and CNC controllers and DXF (LWPOLYLINE bulges) speak arcs natively. A dense polygon of
+// the same curve makes the offset only as good as its chords and much slower (docs/cam.md).
+//
+// Why the odd representation: every tangent direction is stored as the half-angle tangent m of
+// its angle, (cos, sin) = ((1 - m^2), 2 m) / (1 + m^2), which is an exact rational for the double
+// m. Knots are doubles (exact rationals too), so each biarc's radii solve a 2x2 linear system in
+// rational arithmetic and the whole spline and its offset are exact: consecutive arcs meet exactly
+// and share their tangent (G1), which CGAL's exact arrangement needs to avoid slivers. Lengths in
+// the unit of the caller (mm in gearkit), angles in radians.
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+namespace gearkit::cam {
+
+/// Geometric computation failed (CGAL precondition or assertion, degenerate input).
+class GeometryError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A unit vector, exactly rational: see the file comment. `reversed` adds pi to the angle so that
+/// |m| <= 1 always (m = tan of half the angle within (-pi/2, pi/2]).
+struct Direction {
+  double m = 0;
+  bool reversed = false;
+
+  static Direction from_angle(double angle_rad);
+  double x() const;
+  double y() const;
+  double angle() const;
+};
+
+/// A point of the spline with its tangent direction (the direction of travel).
+struct Knot {
+  double x = 0, y = 0;
+  Direction tangent;
+};
+
+/// knots[i] -> knots[i+1] is one biarc whose two arcs meet with tangent joints[i].
+/// A closed spline repeats its first knot at the end (knots.front() == knots.back()).
+struct BiarcSpline {
+  std::vector<Knot> knots;
+  std::vector<Direction> joints;
+};
+
+/// A straight segment (radius == 0) or a circular arc from (x0, y0) to (x1, y1) about (cx, cy);
+/// radius > 0 turns counter-clockwise, < 0 clockwise. sweep is the signed included angle [rad].
+struct Piece {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  double cx = 0, cy = 0;
+  double radius = 0;
+  double sweep = 0;
+
+  bool is_arc() const { return radius != 0; }
+};
+
+/// A point and unit tangent of a parametric curve at parameter t.
+struct CurvePoint {
+  double x = 0, y = 0;
+  double tx = 0, ty = 0;
+};
+
+struct FitOptions {
+  double tolerance = 1e-4;  ///< largest distance from the curve to the arcs [length]
+  int max_depth = 24;       ///< interval halvings before giving up on an interval
+};
+
+/// Fits biarcs to curve(t) on [breaks.front(), breaks.back()], interpolating the curve's points and
+/// tangents at the breaks and at as many more parameters as the tolerance needs (interval halving,
+/// error measured at 5 interior points per biarc). With `closed`, the last knot is made identical
+/// to the first. Breaks should include the places where the curvature jumps.
+/// @throws GeometryError if an interval cannot meet the tolerance within max_depth halvings
+///         (a cusp or a corner in the curve).
+BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vector<double> breaks,
+                       const FitOptions& options, bool closed);
+
+/// The arcs of a biarc spline (two per biarc, evaluated in double precision).
+std::vector<Piece> pieces_of(const BiarcSpline& spline);
+
+/// Distance from (x, y) to a piece.
+double distance_to_piece(const Piece& piece, double x, double y);
+
+/// Joins consecutive arcs on the same circle (and collinear segments), within rel_tol of the
+/// radius, never beyond 270 deg of sweep (bulges stay finite).
+std::vector<Piece> merge_pieces(const std::vector<Piece>& pieces, double rel_tol = 1e-9);
+
+/// A polyline vertex in the DXF convention: the segment that starts here is an arc of included
+/// angle 4 atan(bulge) (positive counter-clockwise), or straight for bulge 0.
+struct BulgeVertex {
+  double x = 0, y = 0, bulge = 0;
+};
+
+/// A closed chain of pieces as bulge vertices, consecutive arcs on one circle merged first.
+std::vector<BulgeVertex> bulge_vertices(const std::vector<Piece>& loop);
+
+/// The result of offsetting a closed spline.
+struct OffsetCurve {
+  std::vector<std::vector<Piece>> loops;  ///< closed, counter-clockwise
+  bool trimmed = false;  ///< parts of the raw offset were cut away (the offset folded over: undercut)
+};
+
+/// Offsets a closed, counter-clockwise, non-self-intersecting biarc spline by `distance` to its
+/// left (inwards: the inset of the region it bounds; negative: outwards). The raw offset (each
+/// arc's concentric arc) is built exactly and put in a CGAL arrangement of circular arcs
+/// (Arr_circle_segment_traits_2, exact kernel); the faces at the right distance from the spline
+/// are kept. distance == 0 returns the spline's own arcs.
+/// @throws GeometryError if CGAL reports a failure (its error behaviour is set to throw) or the
+///         inset is empty (distance larger than the region allows).
+OffsetCurve offset_closed_spline(const BiarcSpline& spline, double distance);
+
+/// The reference method the arc-spline offset is checked against: CGAL's approximated_inset_2
+/// (the Minkowski sum of the complement with a disc, by convolution) of the simple,
+/// counter-clockwise polygon through `points` [x, y], with CGAL's error bound `eps` on the
+/// irrational offset edges. Its result is exact for the polygon, so it differs from the smooth
+/// curve's offset by the polygon's chord sag. Seconds for thousands of vertices: for tests.
+/// @throws GeometryError if CGAL fails (error behaviour set to throw) or the inset is empty.
+std::vector<std::vector<Piece>> polygon_inset(const std::vector<std::pair<double, double>>& points, double distance,
+                                              double eps);
+
+}  // namespace gearkit::cam

@@ -1,0 +1,84 @@
+#pragma once
+// A cam and its follower, and the geometry of their contact at any cam angle.
+//
+// Frames and units: lengths in mm, angles in rad. The cam turns about the origin. In the fixed
+// frame a translating follower moves along +y on the line x = offset; an oscillating follower's
+// pivot is at (pivot_distance, 0) and its arm reaches up and to the left towards the cam, the
+// roller centre at pivot + arm_length (-cos gamma, sin gamma), where gamma = gamma_0 + psi grows
+// as the follower rises (psi = the motion program's s, in rad). The cam frame turns with the cam;
+// profiles are given in it, at cam angle 0 aligned with the fixed frame.
+#include <gearkit/cam/motion_program.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace gearkit::cam {
+
+enum class FollowerMotion { translating, oscillating };
+enum class Contact { knife_edge, roller, flat_face };
+enum class Rotation { ccw, cw };
+
+struct Follower {
+  FollowerMotion motion = FollowerMotion::translating;
+  Contact contact = Contact::roller;
+  double roller_radius = 0;   ///< roller [mm]
+  double offset = 0;          ///< translating: follower axis at x = offset [mm]
+  double pivot_distance = 0;  ///< oscillating: cam centre to pivot [mm]
+  double arm_length = 0;      ///< oscillating: pivot to roller centre (or knife tip) [mm]
+  double face_offset = 0;     ///< oscillating flat face: signed distance pivot to face line [mm]
+};
+
+struct CamDesign {
+  MotionProgram program;
+  Follower follower;
+  double base_radius = 0;  ///< base circle of the profile (smallest radius of the cam) [mm]
+  Rotation rotation = Rotation::ccw;
+};
+
+/// An impossible design; `field` names the offending quantity ("roller_radius", "base_radius",
+/// "offset", "pivot_distance", "arm_length", "face_offset", "motion").
+class DesignError : public std::invalid_argument {
+ public:
+  DesignError(std::string field, const std::string& message)
+      : std::invalid_argument(message), field_(std::move(field)) {}
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string field_;
+};
+
+/// Checks that the follower can touch the cam everywhere.
+/// @throws DesignError for a negative or non-finite radius or length; a base circle not larger
+///         than zero or smaller than the roller; a translating offset not smaller than the prime
+///         circle radius; an oscillating follower whose roller cannot reach the prime circle
+///         (|pivot_distance - arm_length| >= prime radius or pivot_distance + arm_length <= it),
+///         or whose arm would swing through the line of centres (gamma_0 + max psi >= 180 deg);
+///         an oscillating flat face that cannot touch the base circle.
+void validate(const CamDesign& design);
+
+struct Vec2 {
+  double x = 0, y = 0;
+};
+
+/// The contact at one cam angle (all vectors in the cam frame unless noted).
+struct ContactState {
+  double theta = 0;       ///< cam angle [rad]
+  Motion motion;          ///< follower coordinate and derivatives per rad
+  Vec2 pitch;             ///< roller centre or knife tip (flat face: the contact point)
+  Vec2 pitch_tangent;     ///< d(pitch)/dtheta
+  Vec2 contact;           ///< point of the profile touched (the analytic profile)
+  Vec2 follower_point;    ///< roller centre / knife tip / contact point in the fixed frame
+  double pressure_angle = 0;   ///< signed angle between the contact normal and the follower's path [rad]
+  double curvature_pitch = 0;  ///< 1/rho of the pitch curve, > 0 convex [1/mm]
+  double curvature_profile = 0;  ///< 1/rho of the profile, > 0 convex [1/mm]
+  double face_position = 0;  ///< flat face: contact along the face from the follower axis or pivot [mm]
+  bool envelope_regular = true;  ///< oscillating flat face: the face normal turns monotonically here
+};
+
+/// The contact geometry at cam angle theta. Requires validate(design) to have passed.
+ContactState contact_at(const CamDesign& design, double theta);
+
+/// +1 for a counter-clockwise cam, -1 for clockwise.
+inline double rotation_sign(Rotation r) { return r == Rotation::ccw ? 1.0 : -1.0; }
+
+}  // namespace gearkit::cam

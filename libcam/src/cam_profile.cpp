@@ -1,0 +1,130 @@
+#include <gearkit/cam/cam_profile.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace gearkit::cam {
+namespace {
+
+constexpr double two_pi = 2 * std::numbers::pi;
+
+/// The pitch curve (or flat-face envelope) as a counter-clockwise curve of t in [0, 2 pi]: the
+/// contact runs clockwise for a counter-clockwise cam, so then t runs against theta.
+struct CounterClockwiseCurve {
+  const CamDesign& design;
+  double sigma;
+
+  double theta_of(double t) const {
+    const double t0 = design.program.start();
+    return sigma < 0 ? t0 + t : t0 + two_pi - t;
+  }
+  CurvePoint operator()(double t) const {
+    const ContactState c = contact_at(design, theta_of(t));
+    const double k = sigma < 0 ? 1 : -1;
+    return {c.pitch.x, c.pitch.y, k * c.pitch_tangent.x, k * c.pitch_tangent.y};
+  }
+};
+
+std::vector<double> breaks_of(const CamDesign& d, double sigma) {
+  std::vector<double> breaks;
+  for (int i = 0; i <= 36; ++i) breaks.push_back(two_pi * i / 36);
+  for (const Segment& s : d.program.segments()) {
+    const double rel = s.end - d.program.start();
+    breaks.push_back(sigma < 0 ? rel : two_pi - rel);
+    for (const TablePoint& p : s.table) {
+      const double r = p.theta - d.program.start();
+      breaks.push_back(sigma < 0 ? r : two_pi - r);
+    }
+  }
+  for (double& b : breaks) b = std::clamp(b, 0.0, two_pi);
+  return breaks;
+}
+
+std::vector<Piece> polyline_of(const CamDesign& d, int samples, double sigma) {
+  CounterClockwiseCurve curve{d, sigma};
+  std::vector<Piece> out;
+  CurvePoint prev = curve(0), first = prev;
+  for (int i = 1; i <= samples; ++i) {
+    const CurvePoint p = i == samples ? first : curve(two_pi * i / samples);
+    out.push_back({prev.x, prev.y, p.x, p.y, 0, 0, 0, 0});
+    prev = p;
+  }
+  return out;
+}
+
+}  // namespace
+
+CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options) {
+  CamProfile out;
+  const double sigma = rotation_sign(d.rotation);
+  const CounterClockwiseCurve curve{d, sigma};
+  const FitOptions fit{options.tolerance, 24};
+  BiarcSpline spline;
+  try {
+    spline = fit_biarcs(curve, breaks_of(d, sigma), fit, true);
+  } catch (const GeometryError&) {
+    if (d.follower.contact != Contact::flat_face) throw;
+    // A flat face whose envelope has cusps: no arcs fit the folds; keep the envelope as it is.
+    out.profile.push_back(polyline_of(d, 3600, sigma));
+    out.profile_is_polyline = true;
+    return out;
+  }
+  out.biarcs = spline.knots.size() - 1;
+  if (d.follower.contact == Contact::flat_face) {
+    out.profile.push_back(pieces_of(spline));
+    if (options.cutter_radius) {
+      const OffsetCurve tool = offset_closed_spline(spline, -*options.cutter_radius);
+      out.tool_path = tool.loops;
+      out.tool_path_trimmed = tool.trimmed;
+    }
+    return out;
+  }
+  out.pitch_curve = pieces_of(spline);
+  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
+  const OffsetCurve profile = offset_closed_spline(spline, Rr);
+  out.profile = profile.loops;
+  out.profile_trimmed = profile.trimmed;
+  if (options.cutter_radius) {
+    const OffsetCurve tool = offset_closed_spline(spline, Rr - *options.cutter_radius);
+    out.tool_path = tool.loops;
+    out.tool_path_trimmed = tool.trimmed && !profile.trimmed;
+  }
+  return out;
+}
+
+double max_deviation(const std::vector<std::vector<Piece>>& loops, const std::vector<Vec2>& points) {
+  std::vector<Piece> all;
+  for (const auto& loop : loops) all.insert(all.end(), loop.begin(), loop.end());
+  if (all.empty()) return INFINITY;
+  const long n = static_cast<long>(all.size());
+  long cursor = 0;
+  double worst = 0;
+  auto full_scan = [&](const Vec2& p, double& best) {
+    for (long k = 0; k < n; ++k) {
+      const double d = distance_to_piece(all[k], p.x, p.y);
+      if (d < best) best = d, cursor = k;
+    }
+  };
+  bool first = true;
+  for (const Vec2& p : points) {
+    double best = INFINITY;
+    if (first) {
+      full_scan(p, best);
+      first = false;
+    } else {
+      // Consecutive points lie on the same or neighbouring pieces: look around the last one.
+      const long start = cursor;
+      for (long k = -6; k <= 6; ++k) {
+        const long idx = ((start + k) % n + n) % n;
+        const double d = distance_to_piece(all[idx], p.x, p.y);
+        if (d < best) best = d, cursor = idx;
+      }
+      if (best > 1e-2) full_scan(p, best);
+    }
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+
+}  // namespace gearkit::cam

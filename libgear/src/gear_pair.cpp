@@ -1,0 +1,549 @@
+#include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/gear/backlash.hpp>
+#include <gearkit/gear/cylindrical_gear.hpp>
+#include <gearkit/gear/involute.hpp>
+#include <gearkit/gear/measurement.hpp>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <utility>
+
+namespace gearkit::gear {
+
+GeometryError::GeometryError(std::string field, const std::string& message)
+    : std::invalid_argument(message), field_(std::move(field)) {}
+
+const char* to_string(Mounting mounting) {
+  switch (mounting) {
+    case Mounting::zero: return "zero";
+    case Mounting::v_zero: return "V-0";
+    case Mounting::v: return "V";
+  }
+  return "V";
+}
+
+const char* to_string(ShiftSplit split) {
+  switch (split) {
+    case ShiftSplit::user_x1: return "user";
+    case ShiftSplit::balanced_sliding: return "balanced";
+    case ShiftSplit::proportional: return "proportional";
+  }
+  return "user";
+}
+
+double reference_center_distance(int z1, int z2, double m_t) { return 0.5 * m_t * (z1 + z2); }
+
+double working_pressure_angle(double alpha_t, double alpha_n, int z1, int z2, double sum_x) {
+  const double inv_wt = involute(alpha_t) + 2.0 * std::tan(alpha_n) * sum_x / (z1 + z2);
+  return inverse_involute(inv_wt);
+}
+
+double working_pressure_angle_for_center_distance(double a_d, double alpha_t, double a) {
+  const double c = a_d * std::cos(alpha_t) / a;
+  if (!(c > 0.0 && c <= 1.0)) {
+    throw std::domain_error(fmt::format("centre distance {:.6g} mm is below the sum of the base radii {:.6g} mm",
+                                        std::fabs(a), std::fabs(a_d * std::cos(alpha_t))));
+  }
+  return std::acos(c);
+}
+
+double center_distance(double a_d, double alpha_t, double alpha_wt) { return a_d * std::cos(alpha_t) / std::cos(alpha_wt); }
+
+double sum_of_shifts(int z1, int z2, double alpha_t, double alpha_n, double alpha_wt) {
+  return (z1 + z2) * (involute(alpha_wt) - involute(alpha_t)) / (2.0 * std::tan(alpha_n));
+}
+
+double center_distance_modification(double a, double a_d, double m_n) { return (a - a_d) / m_n; }
+
+double tip_shortening(double sum_x, double y) { return sum_x - y; }
+
+Mounting mounting_type(double x1, double x2) {
+  constexpr double tol = 1e-9;
+  if (std::fabs(x1) < tol && std::fabs(x2) < tol) return Mounting::zero;
+  if (std::fabs(x1 + x2) < tol) return Mounting::v_zero;
+  return Mounting::v;
+}
+
+double transverse_contact_ratio(int z1, int z2, double alpha_a1, double alpha_a2, double alpha_wt) {
+  const double t = std::tan(alpha_wt);
+  return (z1 * (std::tan(alpha_a1) - t) + z2 * (std::tan(alpha_a2) - t)) / (2.0 * std::numbers::pi);
+}
+
+double transverse_contact_ratio_from_lengths(double rho_a1, double rho_a2, double a, double alpha_wt, double p_bt) {
+  return (rho_a1 + rho_a2 - a * std::sin(alpha_wt)) / p_bt;
+}
+
+double overlap_ratio(double b, double beta, double m_n) { return b * std::fabs(std::sin(beta)) / (std::numbers::pi * m_n); }
+
+double tip_clearance(double a, double d_ai, double d_fj) { return a - 0.5 * d_ai - 0.5 * d_fj; }
+
+namespace {
+
+// Pressure angle at the tip, 0 when the tip circle lies inside the base circle (the involute,
+// and with it the contact, then ends at the base circle).
+double tip_pressure_angle(double d_b, double d_a) {
+  const double c = d_b / d_a;
+  return c >= 1.0 ? 0.0 : std::acos(c);
+}
+
+}  // namespace
+
+double max_specific_sliding(int z_i, int z_j, double d_bj, double d_aj, double a, double alpha_wt) {
+  // rho = r_b tan(alpha_a) = sqrt(r_a^2 - r_b^2) with the sign of the gear (0 inside the base circle).
+  const double rho_j_tip = std::copysign(std::sqrt(std::max(0.0, 0.25 * (d_aj * d_aj - d_bj * d_bj))), d_bj);
+  const double rho_i_root = a * std::sin(alpha_wt) - rho_j_tip;
+  if (rho_i_root * z_i <= 0.0) return -std::numeric_limits<double>::infinity();
+  return 1.0 - (rho_j_tip / rho_i_root) * (static_cast<double>(z_i) / z_j);
+}
+
+double teeth_sum_for_center_distance(double a, double m_n, double beta) { return 2.0 * a * std::cos(beta) / m_n; }
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct Basics {
+  int Z1 = 0, Z2 = 0;  // signed
+  double m_n = 0, m_t = 0, alpha_n = 0, alpha_t = 0, beta = 0, beta_b = 0;
+  double inv_alpha_t = 0, tan_alpha_n = 0, cos_beta = 1, cos_beta_b = 1;  // used by every gear: computed once
+  double d1 = 0, d2 = 0, d_b1 = 0, d_b2 = 0, a_d = 0;
+  Rack rack;
+};
+
+// The message is built only on failure: validation runs on every table.
+template <class Message>
+void require(bool ok, const char* field, Message message) {
+  if (!ok) throw GeometryError(field, message());
+}
+
+Basics basics_of(const GearPairInput& in) {
+  require(in.z1 >= 1, "z1", [&] { return fmt::format("expected a number of teeth >= 1, found {}", in.z1); });
+  require(in.z2 >= 1, "z2", [&] { return fmt::format("expected a number of teeth >= 1, found {}", in.z2); });
+  require(!in.internal || in.z2 > in.z1, "z2", [&] { return
+          fmt::format("an internal gear needs more teeth than its pinion (z2 > z1 = {}), found {}", in.z1, in.z2); });
+  require(std::isfinite(in.module) && in.module > 0.0, "module", [&] { return fmt::format("expected a module > 0 mm, found {}", in.module); });
+  require(std::isfinite(in.pressure_angle) && in.pressure_angle > 0.0 && in.pressure_angle < 45.0 * kDeg, "pressure_angle", [&] { return
+          fmt::format("expected a pressure angle in (0, 45) deg, found {} deg", in.pressure_angle / kDeg); });
+  require(std::isfinite(in.helix_angle) && std::fabs(in.helix_angle) < 45.0 * kDeg, "helix_angle", [&] { return
+          fmt::format("expected a helix angle with |beta| < 45 deg, found {} deg", in.helix_angle / kDeg); });
+  require(std::isfinite(in.face_width) && in.face_width >= 0.0, "face_width", [&] { return
+          fmt::format("expected a face width >= 0 mm, found {}", in.face_width); });
+  Basics b;
+  b.beta = in.helix_angle;
+  if (in.system == ModuleSystem::normal) {
+    b.m_n = in.module;
+    b.alpha_n = in.pressure_angle;
+    b.m_t = transverse_module(b.m_n, b.beta);
+    b.alpha_t = transverse_pressure_angle(b.alpha_n, b.beta);
+  } else {
+    b.m_t = in.module;
+    b.alpha_t = in.pressure_angle;
+    b.m_n = b.m_t * std::cos(b.beta);
+    b.alpha_n = normal_pressure_angle(b.alpha_t, b.beta);
+  }
+  b.rack = Rack{b.alpha_n, in.h_aP, in.h_fP, in.rho_fP};
+  try {
+    validate(b.rack);
+  } catch (const std::invalid_argument& e) {
+    throw GeometryError("rack", e.what());
+  }
+  b.beta_b = base_helix_angle(b.beta, b.alpha_n);
+  b.inv_alpha_t = involute(b.alpha_t);
+  b.tan_alpha_n = std::tan(b.alpha_n);
+  b.cos_beta = std::cos(b.beta);
+  b.cos_beta_b = std::cos(b.beta_b);
+  b.Z1 = in.z1;
+  b.Z2 = in.internal ? -in.z2 : in.z2;
+  b.d1 = reference_diameter(b.Z1, b.m_n, b.beta);
+  b.d2 = reference_diameter(b.Z2, b.m_n, b.beta);
+  b.d_b1 = base_diameter(b.d1, b.alpha_t);
+  b.d_b2 = base_diameter(b.d2, b.alpha_t);
+  b.a_d = reference_center_distance(b.Z1, b.Z2, b.m_t);
+  return b;
+}
+
+// Tip diameters and the specific sliding difference for a trial x1 (x2 = sum_x - x1).
+double sliding_difference(const Basics& b, double sum_x, double k, double a, double alpha_wt, double x1) {
+  const double x2 = sum_x - x1;
+  const double d_a1 = tip_diameter(b.d1, b.m_n, b.rack.h_aP, x1, k);
+  const double d_a2 = tip_diameter(b.d2, b.m_n, b.rack.h_aP, x2, k);
+  const double z1 = max_specific_sliding(b.Z1, b.Z2, b.d_b2, d_a2, a, alpha_wt);
+  const double z2 = max_specific_sliding(b.Z2, b.Z1, b.d_b1, d_a1, a, alpha_wt);
+  if (std::isinf(z1) && std::isinf(z2)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isinf(z1)) return -1e300;
+  if (std::isinf(z2)) return 1e300;
+  return z1 - z2;
+}
+
+// x1 that equalises the maximum specific sliding of both gears (bisection: the difference
+// grows monotonically with x1). Returns NaN when no split brackets a solution.
+double balanced_x1(const Basics& b, double sum_x, double k, double a, double alpha_wt) {
+  double lo = 0.5 * sum_x - 3.0, hi = 0.5 * sum_x + 3.0;
+  double f_lo = sliding_difference(b, sum_x, k, a, alpha_wt, lo);
+  double f_hi = sliding_difference(b, sum_x, k, a, alpha_wt, hi);
+  if (!(f_lo < 0.0 && f_hi > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i < 200 && hi - lo > 1e-13; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const double f = sliding_difference(b, sum_x, k, a, alpha_wt, mid);
+    if (std::isnan(f)) return f;
+    (f < 0.0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// KHK "Gear Technical Reference", internal gears, trochoid interference: the pinion tip must
+// clear the ring tip while entering and leaving the mesh:
+// theta1 z1/z2 + inv a_w - inv a_a2 >= theta2 (all magnitudes). Returns that margin, or +inf
+// when the tip circles do not intersect (no interference possible).
+double trochoid_margin(double r_a1, double r_a2, double r_b1, double r_b2, double a, int z1, int z2, double alpha_w) {
+  const double c1 = (r_a2 * r_a2 - r_a1 * r_a1 - a * a) / (2.0 * a * r_a1);
+  const double c2 = (a * a + r_a2 * r_a2 - r_a1 * r_a1) / (2.0 * a * r_a2);
+  if (std::fabs(c1) > 1.0 || std::fabs(c2) > 1.0) return std::numeric_limits<double>::infinity();
+  const double alpha_a1 = tip_pressure_angle(r_b1, r_a1);
+  const double alpha_a2 = tip_pressure_angle(r_b2, r_a2);
+  const double theta1 = std::acos(c1) + involute(alpha_a1) - involute(alpha_w);
+  const double theta2 = std::acos(c2);
+  return theta1 * z1 / z2 + involute(alpha_w) - involute(alpha_a2) - theta2;
+}
+
+// Same as make_tooth_data, from the pair's angles (computed once per pair, not per measurement).
+ToothData tooth_data(int i, const Basics& b, double s_t) {
+  ToothData g{i == 0 ? b.Z1 : b.Z2, b.m_n, b.alpha_n, b.beta, s_t};
+  g.m_t = b.m_t;
+  g.alpha_t = b.alpha_t;
+  g.inv_alpha_t = b.inv_alpha_t;
+  g.d = i == 0 ? b.d1 : b.d2;
+  g.d_b = i == 0 ? b.d_b1 : b.d_b2;
+  g.beta_b = b.beta_b;
+  g.cos_beta = b.cos_beta;
+  g.cos_beta_b = b.cos_beta_b;
+  g.tan_alpha_n = b.tan_alpha_n;
+  g.x = (s_t / b.m_t - std::numbers::pi / 2.0) / (2.0 * b.tan_alpha_n);
+  return g;
+}
+
+}  // namespace
+
+namespace {
+
+// Transverse tip thickness of external gear i with shift x at its full (not shortened) tip
+// circle d + 2 m_n (h_aP* + x); positive when the tip lies inside the base circle.
+double full_tip_thickness(const Basics& b, int i, double x) {
+  const double d = i == 0 ? b.d1 : b.d2;
+  const double d_b = i == 0 ? b.d_b1 : b.d_b2;
+  const double d_a = tip_diameter(d, b.m_n, b.rack.h_aP, x, 0.0);
+  if (std::fabs(d_a) <= std::fabs(d_b)) return 1.0;
+  return tooth_thickness_at(reference_tooth_thickness(b.m_t, x, b.alpha_n), d, d_b, b.alpha_t, d_a);
+}
+
+// Shift coefficient at which the tooth of external gear i becomes pointed at its full tip circle
+// (the tip thickness decreases monotonically with x: bisection to 1e-7).
+double pointed_shift(const Basics& b, int i) {
+  double lo = -0.5, hi = 20.0;
+  while (hi - lo > 1e-7) {
+    const double mid = 0.5 * (lo + hi);
+    (full_tip_thickness(b, i, mid) > 0.0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+GearPairResult compute_checked(const GearPairInput& in);
+
+}  // namespace
+
+GearPairResult compute_gear_pair(const GearPairInput& in) {
+  // Degenerate geometry that slipped through the checks (a diameter inside a base circle, an
+  // angle out of range) is the input's fault: report it against the input, never as a crash.
+  try {
+    return compute_checked(in);
+  } catch (const GeometryError&) {
+    throw;
+  } catch (const std::domain_error& e) {
+    throw GeometryError(in.center_distance ? "center_distance" : "x1",
+                        fmt::format("the pair has no valid geometry with these data: {}", e.what()));
+  }
+}
+
+namespace {
+
+GearPairResult compute_checked(const GearPairInput& in) {
+  const Basics b = basics_of(in);
+  GearPairResult r;
+  PairResult& p = r.pair;
+  const double sign = in.internal ? -1.0 : 1.0;
+
+  // Working pressure angle, centre distance and shifts.
+  double x1 = in.x1, x2 = in.x2, a = 0, alpha_wt = 0;
+  const double x_thin = -std::numbers::pi / (4.0 * b.tan_alpha_n);  // s = 0 at the reference circle
+  if (in.center_distance) {
+    const double a_in = *in.center_distance;
+    require(std::isfinite(a_in) && a_in > 0.0, "center_distance", [&] { return fmt::format("expected a centre distance > 0 mm, found {}", a_in); });
+    a = sign * a_in;
+    try {
+      alpha_wt = working_pressure_angle_for_center_distance(b.a_d, b.alpha_t, a);
+    } catch (const std::domain_error&) {
+      throw GeometryError("center_distance",
+                          fmt::format("the pair cannot reach {:.4f} mm: the centre distance must be at least {:.4f} mm ({} of the base radii)",
+                                      a_in, std::fabs(b.a_d * std::cos(b.alpha_t)), in.internal ? "difference" : "sum"));
+    }
+    p.sum_x = sum_of_shifts(b.Z1, b.Z2, b.alpha_t, b.alpha_n, alpha_wt);
+    const double y = center_distance_modification(a, b.a_d, b.m_n);
+    const double k = std::max(0.0, tip_shortening(p.sum_x, y));
+    const double k_used = in.apply_tip_shortening ? k : 0.0;
+    p.split = in.split;
+    switch (in.split) {
+      case ShiftSplit::user_x1: x1 = in.x1; break;
+      case ShiftSplit::proportional: x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2); break;
+      case ShiftSplit::balanced_sliding:
+        x1 = balanced_x1(b, p.sum_x, k_used, a, alpha_wt);
+        if (std::isnan(x1)) {
+          x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2);
+          p.split = ShiftSplit::proportional;
+          r.warnings.push_back("no split of the shift sum balances the specific sliding; the proportional split is used");
+        }
+        break;
+    }
+    x2 = p.sum_x - x1;
+    // Reachable unless the split leaves a pointed tooth; then the shift sum decides whether any
+    // split could do better (error) or only this one is poor (warnings follow).
+    if (!in.internal && (full_tip_thickness(b, 0, x1) <= 0.0 || full_tip_thickness(b, 1, x2) <= 0.0)) {
+      const double limit = pointed_shift(b, 0) + pointed_shift(b, 1);
+      if (p.sum_x > limit) {
+        throw GeometryError("center_distance",
+                            fmt::format("the pair cannot reach {:.4f} mm: it needs x1 + x2 = {:.4f}, but the teeth become "
+                                        "pointed beyond x1 + x2 = {:.4f} (at most {:.4f} mm)",
+                                        a_in, p.sum_x, limit, std::fabs(center_distance(b.a_d, b.alpha_t,
+                                            working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, limit)))));
+      }
+    }
+    if (x1 <= x_thin || x2 <= x_thin) {
+      throw GeometryError("center_distance",
+                          fmt::format("the pair cannot reach {:.4f} mm: the shift split x1 = {:.4f}, x2 = {:.4f} leaves no tooth at "
+                                      "the reference circle",
+                                      a_in, x1, x2));
+    }
+  } else {
+    require(std::isfinite(x1) && x1 > x_thin, "x1", [&] { return fmt::format("expected x1 > {:.4f} (tooth thickness > 0), found {}", x_thin, x1); });
+    require(std::isfinite(x2) && x2 > x_thin, "x2", [&] { return fmt::format("expected x2 > {:.4f} (tooth thickness > 0), found {}", x_thin, x2); });
+    p.sum_x = x1 + x2;
+    p.split = ShiftSplit::user_x1;
+    try {
+      alpha_wt = working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, p.sum_x);
+    } catch (const std::domain_error&) {
+      throw GeometryError("x2", fmt::format("the shift sum x1 + x2 = {:.4f} is out of reach: it would need a working pressure "
+                                            "angle below zero (the base circles would overlap)",
+                                            p.sum_x));
+    }
+    a = center_distance(b.a_d, b.alpha_t, alpha_wt);
+  }
+
+  p.alpha_wt = alpha_wt;
+  p.a = std::fabs(a);
+  p.a_d = std::fabs(b.a_d);
+  p.y = center_distance_modification(a, b.a_d, b.m_n);
+  p.k = tip_shortening(p.sum_x, p.y);
+  p.tip_shortened = in.apply_tip_shortening && p.k > 1e-12;
+  const double k_used = p.tip_shortened ? p.k : 0.0;
+  p.mounting = mounting_type(x1, x2);
+  p.u = static_cast<double>(in.z2) / in.z1;
+
+  // Allowances.
+  double A_sn1 = in.A_sn1, A_sn2 = in.A_sn2;
+  const double a_actual = a + sign * in.A_a;
+  const double x_of[2] = {x1, x2};
+  const int Z[2] = {b.Z1, b.Z2};
+  const double d[2] = {b.d1, b.d2};
+  const double d_b[2] = {b.d_b1, b.d_b2};
+  double s_t[2];
+  for (int i = 0; i < 2; ++i) s_t[i] = reference_tooth_thickness(b.m_t, x_of[i], b.alpha_n);
+  BacklashInput bl{b.Z1, b.Z2, b.d1, b.d2, b.d_b1, b.d_b2, b.alpha_t, b.beta_b, s_t[0], s_t[1], a_actual};
+  if (in.backlash_target) {
+    require(std::isfinite(*in.backlash_target) && *in.backlash_target >= 0.0, "backlash_target", [&] { return
+            fmt::format("expected a backlash >= 0 mm, found {}", *in.backlash_target); });
+    try {
+      A_sn1 = A_sn2 = allowance_for_backlash(bl, b.alpha_n, *in.backlash_target);
+    } catch (const std::domain_error&) {
+      throw GeometryError("A_a", "the centre distance deviation puts the base circles out of reach");
+    }
+  }
+  const double A_sn[2] = {A_sn1, A_sn2};
+
+  // Per gear.
+  double rho_Ff_of[2] = {0.0, 0.0};
+  for (int i = 0; i < 2; ++i) {
+    GearResult& g = r.gear[i];
+    const bool ring = Z[i] < 0;
+    g.z = std::abs(Z[i]);
+    g.internal = ring;
+    g.x = x_of[i];
+    g.shift_mm = g.x * b.m_n;
+    g.m_n = b.m_n;
+    g.m_t = b.m_t;
+    g.alpha_n = b.alpha_n;
+    g.alpha_t = b.alpha_t;
+    g.beta = b.beta;
+    g.beta_b = b.beta_b;
+    const double d_a = tip_diameter(d[i], b.m_n, b.rack.h_aP, g.x, k_used);
+    const double d_f = root_diameter(d[i], b.m_n, b.rack.h_fP, g.x);
+    const double d_w = 2.0 * a * Z[i] / (b.Z1 + b.Z2);
+    g.d = std::fabs(d[i]);
+    g.d_b = std::fabs(d_b[i]);
+    g.d_w = std::fabs(d_w);
+    g.d_a = std::fabs(d_a);
+    g.d_f = std::fabs(d_f);
+    g.p_t = std::numbers::pi * b.m_t;
+    g.p_n = std::numbers::pi * b.m_n;
+    g.p_bt = g.p_t * std::cos(b.alpha_t);
+    g.p_en = g.p_n * std::cos(b.alpha_n);
+    g.s_t = s_t[i];
+    g.e_t = g.p_t - g.s_t;
+    g.s_n = g.s_t * std::cos(b.beta);
+    g.e_n = g.e_t * std::cos(b.beta);
+    const ToothData nominal = tooth_data(i, b, s_t[i]);
+    if (std::fabs(d_a) > std::fabs(d_b[i])) {
+      const double s_at = tooth_thickness_at(nominal, d_a);
+      g.s_an = b.beta == 0.0 ? s_at : s_at * std::cos(helix_angle_at(b.beta, d[i], d_a));
+    } else {
+      g.s_an = std::numeric_limits<double>::quiet_NaN();
+    }
+    g.z_n = b.beta == 0.0 ? g.z : std::fabs(virtual_number_of_teeth(Z[i], b.beta, b.alpha_n));
+    g.A_sn = A_sn[i];
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!ring) {
+      g.x_min = min_shift_no_undercut(d[i], b.m_n, b.alpha_t, b.rack);
+      const double rho_Ff = form_roll_length(d_b[i], b.alpha_t, b.m_n, g.x, b.rack);
+      rho_Ff_of[i] = std::max(0.0, rho_Ff);
+      g.d_Ff = rho_Ff > 0.0 ? 2.0 * std::hypot(0.5 * g.d_b, rho_Ff) : g.d_b;
+    } else {
+      g.x_min = nan;
+      g.d_Ff = nan;
+    }
+    const ToothData actual = tooth_data(i, b, s_t[i] + A_sn[i] / std::cos(b.beta));
+    if (!ring && g.z >= 2) {
+      g.k_span = span_teeth(nominal);
+      g.W_k = span_measurement(nominal, g.k_span);
+      g.W_k_actual = A_sn[i] == 0.0 ? g.W_k : span_measurement(actual, g.k_span);
+    } else {
+      g.k_span = 0;
+      g.W_k = g.W_k_actual = nan;
+    }
+    const std::optional<double>& D_given = i == 0 ? in.pin_diameter1 : in.pin_diameter2;
+    try {
+      if (D_given) {
+        require(std::isfinite(*D_given) && *D_given > 0.0, i == 0 ? "pin_diameter1" : "pin_diameter2", [&] { return
+                fmt::format("expected a pin diameter > 0 mm, found {}", *D_given); });
+        g.pin_diameter = *D_given;
+      } else {
+        g.pin_diameter = pin_diameter_for_contact_at(nominal, d[i] + 2.0 * g.x * b.m_n);
+      }
+      g.M_d = dimension_over_pins(nominal, g.pin_diameter);
+      g.M_d_actual = A_sn[i] == 0.0 ? g.M_d : dimension_over_pins(actual, g.pin_diameter);
+    } catch (const std::domain_error&) {
+      g.M_d = g.M_d_actual = nan;
+      r.warnings.push_back(fmt::format("gear {}: no measurement over pins possible (the pin does not fit the tooth space)", i + 1));
+    }
+    g.chordal_s = chordal_thickness(nominal);
+    g.chordal_h = chordal_height(nominal, d_a);
+  }
+
+  // Pair quantities.
+  const double d_a1 = (r.gear[0].d_a), d_a2 = sign * r.gear[1].d_a;
+  const double d_f1 = r.gear[0].d_f, d_f2 = sign * r.gear[1].d_f;
+  // Roll lengths to the tip circles (0 when a tip lies inside its base circle: the involute, and
+  // the contact, end there), signed like the base radii.
+  auto tip_roll = [](double d_b_i, double d_a_i) {
+    return std::copysign(std::sqrt(std::max(0.0, 0.25 * (d_a_i * d_a_i - d_b_i * d_b_i))), d_b_i);
+  };
+  const double rho_tip1 = tip_roll(b.d_b1, d_a1);
+  const double rho_tip2 = tip_roll(b.d_b2, d_a2);
+  const double g_len = a * std::sin(alpha_wt);
+  p.eps_alpha = transverse_contact_ratio_from_lengths(rho_tip1, rho_tip2, a, alpha_wt, r.gear[0].p_bt);
+  p.eps_beta = overlap_ratio(in.face_width, b.beta, b.m_n);
+  p.eps_gamma = p.eps_alpha + p.eps_beta;
+  p.c1 = tip_clearance(a, d_a1, d_f2);
+  p.c2 = tip_clearance(a, d_a2, d_f1);
+  p.zeta1 = max_specific_sliding(b.Z1, b.Z2, b.d_b2, d_a2, a, alpha_wt);
+  p.zeta2 = max_specific_sliding(b.Z2, b.Z1, b.d_b1, d_a1, a, alpha_wt);
+  p.A_a = in.A_a;
+  bl.s_t1 = s_t[0] + A_sn1 / std::cos(b.beta);
+  bl.s_t2 = s_t[1] + A_sn2 / std::cos(b.beta);
+  if (A_sn1 != 0.0 || A_sn2 != 0.0 || in.A_a != 0.0) {
+    try {
+      p.j_wt = circumferential_backlash(bl);
+      p.j_bn = normal_backlash(p.j_wt, working_pressure_angle_at(bl), b.beta_b);
+    } catch (const std::domain_error&) {
+      throw GeometryError("A_a", "the centre distance deviation puts the base circles out of reach");
+    }
+  }  // else zero by construction: nominal teeth mesh without backlash at a (test_backlash.cpp)
+
+  // Checks.
+  auto warn = [&r](std::string text) { r.warnings.push_back(std::move(text)); };
+  for (int i = 0; i < 2; ++i) {
+    const GearResult& g = r.gear[i];
+    if (!g.internal && g.x < g.x_min - 1e-9) {
+      warn(fmt::format("gear {}: undercut (x = {:.4f} < x_min = {:.4f})", i + 1, g.x, g.x_min));
+    }
+    if (std::isnan(g.s_an)) {
+      warn(fmt::format("gear {}: tip circle inside the base circle, the tip is not involute", i + 1));
+    } else if (g.s_an <= 0.0) {
+      warn(fmt::format("gear {}: pointed tooth (tip thickness {:.3f} mm)", i + 1, g.s_an));
+    } else if (g.s_an < 0.2 * b.m_n) {
+      warn(fmt::format("gear {}: thin tip, s_an = {:.3f} mm < 0.2 m_n = {:.3f} mm", i + 1, g.s_an, 0.2 * b.m_n));
+    }
+  }
+  if (p.eps_alpha < 1.0) {
+    warn(fmt::format("transverse contact ratio {:.3f} < 1: the pair does not mesh continuously", p.eps_alpha));
+  } else if (p.eps_alpha < 1.2) {
+    warn(fmt::format("transverse contact ratio {:.3f} < 1.2", p.eps_alpha));
+  }
+  // Involute interference: the contact at the root of gear i must start on its generated involute.
+  const double rho_root1 = g_len - rho_tip2;
+  const double rho_root2 = g_len - rho_tip1;
+  {
+    const double rho_Ff1 = rho_Ff_of[0];
+    if (rho_root1 < rho_Ff1 - 1e-9) {
+      warn(fmt::format("involute interference: the tip of gear 2 reaches gear 1 below its form circle (d_Ff1 = {:.3f} mm)",
+                       r.gear[0].d_Ff));
+    }
+    if (!in.internal) {
+      const double rho_Ff2 = rho_Ff_of[1];
+      if (rho_root2 < rho_Ff2 - 1e-9) {
+        warn(fmt::format("involute interference: the tip of gear 1 reaches gear 2 below its form circle (d_Ff2 = {:.3f} mm)",
+                         r.gear[1].d_Ff));
+      }
+    } else {
+      if (std::fabs(d_a2) <= std::fabs(b.d_b2)) {
+        warn("involute interference: the ring tip circle lies inside its base circle");
+      }
+      const double margin = trochoid_margin(0.5 * r.gear[0].d_a, 0.5 * r.gear[1].d_a, 0.5 * r.gear[0].d_b,
+                                            0.5 * r.gear[1].d_b, p.a, in.z1, in.z2, alpha_wt);
+      if (margin < 0.0) {
+        warn(fmt::format("tip interference of the internal pair (trochoid interference, margin {:.4f} rad)", margin));
+      }
+    }
+  }
+  for (int i = 0; i < 2; ++i) {
+    const GearResult& g = r.gear[i];
+    // A micrometer needs the pins to stand out of the tip circle (inwards for a ring).
+    if (std::isfinite(g.M_d) && (g.internal ? g.M_d >= g.d_a : g.M_d <= g.d_a)) {
+      warn(fmt::format("gear {}: the {:.3f} mm pins do not stand out of the tip circle (M_d = {:.3f} mm, d_a = {:.3f} mm)",
+                       i + 1, g.pin_diameter, g.M_d, g.d_a));
+    }
+    // The anvils of a span measurement must lie on the face: b > W_k sin(beta_b).
+    if (g.k_span > 0 && in.face_width > 0.0 && in.face_width <= g.W_k * std::sin(std::fabs(b.beta_b))) {
+      warn(fmt::format("gear {}: face width {:.3f} mm too narrow for the span over {} teeth (needs > {:.3f} mm)", i + 1,
+                       in.face_width, g.k_span, g.W_k * std::sin(std::fabs(b.beta_b))));
+    }
+  }
+  if (p.c1 < -1e-9) warn(fmt::format("negative tip clearance {:.3f} mm between the tip of gear 1 and the root of gear 2", p.c1));
+  if (p.c2 < -1e-9) warn(fmt::format("negative tip clearance {:.3f} mm between the tip of gear 2 and the root of gear 1", p.c2));
+  if (p.j_wt < -1e-9) warn(fmt::format("negative backlash {:.4f} mm: the teeth jam at the actual centre distance", p.j_wt));
+  return r;
+}
+
+}  // namespace
+
+}  // namespace gearkit::gear

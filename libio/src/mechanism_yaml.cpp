@@ -1,0 +1,380 @@
+#include <gearkit/io/mechanism_yaml.hpp>
+
+#include <gearkit/kin/constraint.hpp>
+#include <gearkit/kin/joints.hpp>
+
+#include <cmath>
+#include <deque>
+#include <map>
+#include <set>
+
+namespace gearkit::io {
+
+namespace {
+
+using kin::BodyPoint;
+using kin::kGround;
+
+std::string scalar(const YAML::Node& node, const std::string& file, std::string_view what) {
+  return scalar_text(node, file, what);
+}
+
+// A pair [x, y] of lengths (bare numbers in mm).
+Eigen::Vector2d read_xy(const YAML::Node& node, const std::string& file, Quantity q, std::string_view unit,
+                        std::string_view what) {
+  if (!node.IsSequence() || node.size() != 2)
+    fail_at(mark_of(node, file), std::string("expected ") + std::string(what) + " as [x, y], found " +
+                                     (node.IsScalar() ? "'" + node.Scalar() + "'" : std::string("something else")));
+  return {scalar_quantity(node[0], file, q, unit), scalar_quantity(node[1], file, q, unit)};
+}
+
+// Builds the model step by step, remembering where each link was declared.
+class Reader {
+ public:
+  Reader(const YamlDocument& doc, const ElementTypeLookup& elements) : doc_(doc), elements_(elements) {}
+
+  Mechanism read() {
+    MapReader root(doc_.root, doc_.file, "mechanism");
+    mech_.file = doc_.file;
+    mech_.title = root.optional_string("mechanism").value_or(doc_.file);
+    if (auto g = root.optional_node("ground")) read_ground(*g);
+    read_links(root.node("links"));
+    std::vector<YAML::Node> joints;
+    if (root.has("joints")) joints = root.sequence("joints");
+    std::vector<YAML::Node> elements;
+    if (root.has("elements")) elements = root.sequence("elements");
+    std::vector<YAML::Node> drivers;
+    if (root.has("drivers")) drivers = root.sequence("drivers");
+    for (const YAML::Node& j : joints) read_joint(j);
+    place_links();
+    for (const YAML::Node& e : elements) read_element(e);
+    for (const YAML::Node& d : drivers) read_driver(d);
+    if (auto loads = root.optional_node("loads")) read_loads(*loads);
+    if (root.has("outputs"))
+      for (const YAML::Node& o : root.sequence("outputs")) read_output(o);
+    root.finish();
+    return std::move(mech_);
+  }
+
+ private:
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const {
+    fail_at(mark_of(node, doc_.file), message);
+  }
+
+  void read_ground(const YAML::Node& node) {
+    if (!node.IsMap()) fail(node, "expected 'ground' as a mapping of point names to [x, y], found something else");
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const std::string name = scalar(it->first, doc_.file, "a ground point name");
+      if (mech_.model.ground().point(name)) fail(it->first, "duplicate ground point '" + name + "'");
+      mech_.model.ground().points.emplace_back(name, read_xy(it->second, doc_.file, Quantity::length, "mm", "a ground point"));
+    }
+  }
+
+  void read_links(const YAML::Node& node) {
+    if (!node.IsMap() || node.size() == 0)
+      fail(node, "expected 'links' as a mapping of link names to their points, found " +
+                     std::string(node.IsMap() ? "an empty mapping" : "something else"));
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      kin::Body b;
+      b.name = scalar(it->first, doc_.file, "a link name");
+      if (b.name == "ground" || b.name.find('.') != std::string::npos || b.name.empty())
+        fail(it->first, "expected a link name without '.' other than 'ground', found '" + b.name + "'");
+      if (mech_.model.body_index(b.name)) fail(it->first, "duplicate link '" + b.name + "'");
+      MapReader link(it->second, doc_.file, "link '" + b.name + "'");
+      const YAML::Node points = link.node("points");
+      if (!points.IsMap() || points.size() == 0)
+        fail(points, "expected the points of link '" + b.name + "' as a mapping name: [x, y], found something else");
+      for (auto p = points.begin(); p != points.end(); ++p) {
+        const std::string pname = scalar(p->first, doc_.file, "a point name");
+        if (b.point(pname)) fail(p->first, "duplicate point '" + pname + "' in link '" + b.name + "'");
+        b.points.emplace_back(pname, read_xy(p->second, doc_.file, Quantity::length, "mm", "a point"));
+      }
+      b.angle_guess = link.quantity_or("angle", Quantity::angle, "deg", 0.0);
+      if (auto pos = link.optional_node("position")) {
+        b.position_guess = read_xy(*pos, doc_.file, Quantity::length, "mm", "the link's position");
+        placed_.insert(static_cast<int>(mech_.model.bodies().size()));
+      }
+      b.mass = link.quantity_or("mass", Quantity::mass, "kg", 0.0);
+      if (b.mass < 0) fail(link.node("mass"), "expected a mass >= 0");
+      if (auto com = link.optional_node("centre_of_mass")) {
+        if (com->IsScalar()) {
+          const auto p = b.point(com->Scalar());
+          if (!p) fail(*com, "expected a point of link '" + b.name + "' or [x, y], found '" + com->Scalar() + "'");
+          b.centre_of_mass = *p;
+        } else {
+          b.centre_of_mass = read_xy(*com, doc_.file, Quantity::length, "mm", "the centre of mass");
+        }
+      }
+      b.inertia = link.quantity_or("inertia", Quantity::moment_of_inertia, "kg*m^2", 0.0);
+      if (b.inertia < 0) fail(link.node("inertia"), "expected an inertia >= 0");
+      link.finish();
+      link_nodes_.push_back(it->first);
+      mech_.model.add_body(std::move(b));
+    }
+  }
+
+  // "link.point" -> body and local coordinates.
+  BodyPoint point_ref(const YAML::Node& node) const {
+    const std::string text = scalar(node, doc_.file, "a point reference 'link.point'");
+    const auto dot = text.find('.');
+    if (dot == std::string::npos) fail(node, "expected a point reference 'link.point', found '" + text + "'");
+    const std::string link = text.substr(0, dot), point = text.substr(dot + 1);
+    const auto body = mech_.model.body_index(link);
+    if (!body) fail(node, "unknown link '" + link + "' in '" + text + "'");
+    const kin::Body& b = *body == kGround ? mech_.model.ground() : mech_.model.bodies()[static_cast<std::size_t>(*body)];
+    const auto local = b.point(point);
+    if (!local) fail(node, "link '" + link + "' has no point '" + point + "'");
+    return {*body, *local};
+  }
+
+  int link_ref(const YAML::Node& node) const {
+    const std::string text = scalar(node, doc_.file, "a link name");
+    const auto body = mech_.model.body_index(text);
+    if (!body) fail(node, "unknown link '" + text + "'");
+    return *body;
+  }
+
+  std::string unique_name(std::optional<std::string> name, const std::string& prefix, const YAML::Node& node) {
+    std::string n = name ? *name : prefix + " " + std::to_string(mech_.model.constraints().size() + 1);
+    if (mech_.model.constraint_index(n)) fail(node, "duplicate joint, element or driver name '" + n + "'");
+    return n;
+  }
+
+  double angle_of(int body) const {
+    return body == kGround ? 0.0 : mech_.model.bodies()[static_cast<std::size_t>(body)].angle_guess;
+  }
+
+  void add(const std::string& name, std::shared_ptr<const kin::Constraint> c, const YAML::Node& node) {
+    try {
+      mech_.model.add_constraint(name, std::move(c));
+    } catch (const std::invalid_argument& e) {
+      fail(node, e.what());
+    }
+  }
+
+  void read_joint(const YAML::Node& node) {
+    MapReader j(node, doc_.file, "joint");
+    const std::string type = j.choice("type", {"revolute", "prismatic", "pin_in_slot"});
+    const std::string name = unique_name(j.optional_string("name"), type, node);
+    if (type == "revolute") {
+      const std::vector<YAML::Node> at = j.sequence("at");
+      if (at.size() != 2) fail(j.node("at"), "expected 'at' as two point references [link.P, other.P]");
+      const BodyPoint a = point_ref(at[0]), b = point_ref(at[1]);
+      if (a.body == b.body) fail(j.node("at"), "a revolute joint needs two different links");
+      add(name, std::make_shared<kin::Revolute>(a, b), node);
+      revolutes_.push_back({a, b});
+    } else {
+      const BodyPoint moving = point_ref(j.node(type == "prismatic" ? "slider" : "pin"));
+      const BodyPoint guide = point_ref(j.node(type == "prismatic" ? "guide" : "slot"));
+      if (moving.body == guide.body) fail(node, "the two sides of joint '" + name + "' are the same link");
+      const double axis = j.quantity("axis", Quantity::angle, "deg");
+      const Eigen::Vector2d u(std::cos(axis), std::sin(axis));
+      if (type == "prismatic") {
+        add(name, std::make_shared<kin::Prismatic>(moving, guide, u, angle_of(moving.body) - angle_of(guide.body)), node);
+        prismatics_[name] = {moving, guide, u};
+        revolutes_.push_back({moving, guide});  // for placing the first guess only
+      } else {
+        add(name, std::make_shared<kin::PinInSlot>(moving, guide, u), node);
+      }
+    }
+    j.finish();
+  }
+
+  // Initial guesses: a link without an explicit position is placed so that its joint point
+  // coincides with the already placed partner's point (breadth first from the ground).
+  void place_links() {
+    std::vector<kin::Body> bodies = mech_.model.bodies();
+    std::set<int> placed = placed_;
+    placed.insert(kGround);
+    auto global = [&](const BodyPoint& p) {
+      if (p.body == kGround) return p.local;
+      const kin::Body& b = bodies[static_cast<std::size_t>(p.body)];
+      return Eigen::Vector2d(b.position_guess + kin::rotate(b.angle_guess, p.local));
+    };
+    bool progress = true;
+    while (progress) {
+      progress = false;
+      for (const auto& [a, b] : revolutes_) {
+        for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+          if (placed.count(x.body) || !placed.count(y.body)) continue;
+          kin::Body& body = bodies[static_cast<std::size_t>(x.body)];
+          body.position_guess = global(y) - kin::rotate(body.angle_guess, x.local);
+          placed.insert(x.body);
+          progress = true;
+        }
+      }
+    }
+    // Rebuild the model's bodies with the guesses (constraints refer to bodies by index).
+    kin::Model m;
+    m.ground() = mech_.model.ground();
+    for (kin::Body& b : bodies) m.add_body(std::move(b));
+    for (const kin::ModelConstraint& c : mech_.model.constraints()) m.add_constraint(c.name, c.constraint);
+    mech_.model = std::move(m);
+  }
+
+  void read_element(const YAML::Node& node) {
+    if (!node.IsMap()) fail(node, "expected an element as a mapping with 'type', found something else");
+    if (!node["type"]) fail(node, "expected the element's 'type' (an element type from a plugin)");
+    const std::string type = scalar(node["type"], doc_.file, "an element type");
+    const kin::ElementTypeSpec* spec = elements_ ? elements_(type) : nullptr;
+    if (!spec || !spec->create)
+      fail(node["type"], "unknown element type '" + type + "' (no loaded plugin provides it; see `gearkit plugins`)");
+    const std::string name = unique_name(node["name"] ? std::optional(scalar(node["name"], doc_.file, "a name")) : std::nullopt, type, node);
+    kin::ElementRequest request{node, doc_.file,
+                                [this, &node](const std::string& body) {
+                                  const auto b = mech_.model.body_index(body);
+                                  if (!b) fail(node, "unknown link '" + body + "'");
+                                  return *b;
+                                },
+                                [this](const YAML::Node& ref) { return point_ref(ref); },
+                                [this](int body) { return angle_of(body); }};
+    std::unique_ptr<kin::Constraint> c = spec->create(request);
+    if (!c) fail(node, "element type '" + type + "' built nothing");
+    add(name, std::shared_ptr<const kin::Constraint>(std::move(c)), node);
+  }
+
+  void read_driver(const YAML::Node& node) {
+    MapReader d(node, doc_.file, "driver");
+    const std::string type = d.choice("type", {"angle", "displacement"});
+    const std::string name = unique_name(d.optional_string("name"), type + " driver", node);
+    MechanismDriver md;
+    md.name = name;
+    const bool angular = type == "angle";
+    md.quantity = angular ? kin::DriverQuantity::angle : kin::DriverQuantity::displacement;
+    const Quantity q = angular ? Quantity::angle : Quantity::length;
+    const std::string unit = angular ? "deg" : "mm";
+    kin::Motion motion;
+    motion.speed = d.quantity_or("speed", angular ? Quantity::angular_velocity : Quantity::velocity,
+                                 angular ? "rad/s" : "m/s", 1.0);
+    motion.acceleration = d.quantity_or("acceleration", angular ? Quantity::angular_acceleration : Quantity::acceleration,
+                                        angular ? "rad/s^2" : "m/s^2", 0.0);
+    double drawn = 0.0;
+    std::shared_ptr<const kin::Constraint> c;
+    if (angular) {
+      const int body = link_ref(d.node("link"));
+      if (body == kGround) fail(d.node("link"), "the ground cannot be driven");
+      const int reference = d.has("relative_to") ? link_ref(d.node("relative_to")) : kGround;
+      drawn = angle_of(body) - angle_of(reference);
+      c = std::make_shared<kin::AngleDriver>(body, reference, motion);
+    } else {
+      const YAML::Node joint = d.node("joint");
+      const std::string jname = scalar(joint, doc_.file, "a prismatic joint name");
+      const auto it = prismatics_.find(jname);
+      if (it == prismatics_.end()) fail(joint, "expected the name of a prismatic joint, found '" + jname + "'");
+      const auto& [slider, guide, axis] = it->second;
+      c = std::make_shared<kin::DisplacementDriver>(slider, guide, axis, motion);
+    }
+    const double value = d.has("value") ? d.quantity("value", q, unit) : drawn;
+    if (auto r = d.optional_node("range")) {
+      if (!r->IsSequence() || (r->size() != 2 && r->size() != 3))
+        fail(*r, "expected 'range' as [start, end] or [start, end, step]");
+      DriverRange range;
+      range.start = scalar_quantity((*r)[0], doc_.file, q, unit);
+      range.end = scalar_quantity((*r)[1], doc_.file, q, unit);
+      range.step = r->size() == 3 ? scalar_quantity((*r)[2], doc_.file, q, unit)
+                                  : std::abs(range.end - range.start) / 100.0;
+      if (!(range.step > 0.0) || range.start == range.end) fail(*r, "expected a range with start != end and a step > 0");
+      if (std::abs(range.end - range.start) / range.step > 1e6) fail(*r, "expected at most 1e6 steps in the range");
+      md.range = range;
+    }
+    d.finish();
+    add(name, c, node);
+    mech_.model.set_driver(static_cast<int>(mech_.model.constraints().size()) - 1, md.quantity, md.range ? md.range->start : value);
+    mech_.drivers.push_back(md);
+  }
+
+  void read_loads(const YAML::Node& node) {
+    MapReader l(node, doc_.file, "loads");
+    if (auto g = l.optional_node("gravity")) {
+      if (g->IsScalar())
+        mech_.model.set_gravity({0.0, -scalar_quantity(*g, doc_.file, Quantity::acceleration, "m/s^2")});
+      else
+        mech_.model.set_gravity(read_xy(*g, doc_.file, Quantity::acceleration, "m/s^2", "gravity"));
+    }
+    if (l.has("forces"))
+      for (const YAML::Node& f : l.sequence("forces")) {
+        MapReader r(f, doc_.file, "force");
+        kin::PointForce pf;
+        pf.at = point_ref(r.node("at"));
+        pf.force = read_xy(r.node("force"), doc_.file, Quantity::force, "N", "a force");
+        pf.name = r.optional_string("name").value_or("force " + std::to_string(mech_.model.forces().size() + 1));
+        r.finish();
+        mech_.model.add_force(pf);
+      }
+    if (l.has("torques"))
+      for (const YAML::Node& t : l.sequence("torques")) {
+        MapReader r(t, doc_.file, "torque");
+        kin::BodyTorque bt;
+        bt.body = link_ref(r.node("link"));
+        bt.torque = r.quantity("torque", Quantity::torque, "N*m");
+        bt.name = r.optional_string("name").value_or("torque " + std::to_string(mech_.model.torques().size() + 1));
+        r.finish();
+        mech_.model.add_torque(bt);
+      }
+    if (l.has("springs"))
+      for (const YAML::Node& s : l.sequence("springs")) {
+        MapReader r(s, doc_.file, "spring");
+        kin::Spring sp;
+        const std::vector<YAML::Node> between = r.sequence("between");
+        if (between.size() != 2) fail(r.node("between"), "expected 'between' as two point references");
+        sp.a = point_ref(between[0]);
+        sp.b = point_ref(between[1]);
+        sp.stiffness = r.quantity("stiffness", Quantity::stiffness, "N/m");
+        sp.free_length = r.quantity("free_length", Quantity::length, "mm");
+        sp.preload = r.quantity_or("preload", Quantity::force, "N", 0.0);
+        sp.name = r.optional_string("name").value_or("spring " + std::to_string(mech_.model.springs().size() + 1));
+        r.finish();
+        mech_.model.add_spring(sp);
+      }
+    l.finish();
+  }
+
+  void read_output(const YAML::Node& node) {
+    MapReader r(node, doc_.file, "output");
+    kin::Output o;
+    o.name = r.string("name");
+    for (const kin::Output& other : mech_.outputs)
+      if (other.name == o.name) fail(r.node("name"), "duplicate output '" + o.name + "'");
+    const std::string type = r.choice("type", {"x", "y", "angle", "slider"});
+    if (type == "x" || type == "y") {
+      o.kind = type == "x" ? kin::OutputKind::point_x : kin::OutputKind::point_y;
+      o.point = point_ref(r.node("point"));
+    } else if (type == "angle") {
+      o.kind = kin::OutputKind::body_angle;
+      o.body = link_ref(r.node("link"));
+      o.reference = r.has("relative_to") ? link_ref(r.node("relative_to")) : kGround;
+    } else {
+      o.kind = kin::OutputKind::slider_displacement;
+      const YAML::Node joint = r.node("joint");
+      const std::string jname = scalar(joint, doc_.file, "a prismatic joint name");
+      if (!prismatics_.count(jname)) fail(joint, "expected the name of a prismatic joint, found '" + jname + "'");
+      o.constraint = *mech_.model.constraint_index(jname);
+    }
+    r.finish();
+    mech_.outputs.push_back(o);
+  }
+
+  const YamlDocument& doc_;
+  const ElementTypeLookup& elements_;
+  Mechanism mech_;
+  std::vector<YAML::Node> link_nodes_;
+  std::set<int> placed_;
+  std::vector<std::pair<BodyPoint, BodyPoint>> revolutes_;
+  struct PrismaticInfo {
+    BodyPoint slider, guide;
+    Eigen::Vector2d axis;
+  };
+  std::map<std::string, PrismaticInfo> prismatics_;
+};
+
+}  // namespace
+
+Mechanism read_mechanism(const YamlDocument& document, const ElementTypeLookup& elements) {
+  return Reader(document, elements).read();
+}
+
+Mechanism load_mechanism(const std::string& path, const ElementTypeLookup& elements) {
+  return read_mechanism(load_yaml_file(path), elements);
+}
+
+}  // namespace gearkit::io

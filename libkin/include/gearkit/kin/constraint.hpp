@@ -1,0 +1,88 @@
+#pragma once
+// The one interface every constraint of a planar mechanism implements, built in (revolute,
+// prismatic, pin in slot, drivers) or contributed by a plugin (gear mesh, epicyclic train, cam
+// follower).
+//
+// Coordinates. Every moving body i carries three absolute coordinates q_i = (x_i, y_i, theta_i):
+// the position of its frame origin in the ground frame [m] and the angle of its local x axis
+// [rad], counter-clockwise positive. A point with local coordinates s' (m) is at
+//     r = r_i + A(theta_i) s'.
+// Ground has index kGround and is never a coordinate.
+//
+// A constraint contributes m = equations() rows of the system
+//     Phi(q, t) = 0,   Phi_q qd = -Phi_t,   Phi_q qdd = gamma,
+// where gamma = -(Phi_q qd)_q qd - 2 Phi_qt qd - Phi_tt. It touches only the bodies listed by
+// bodies(); its Jacobian block has 3 columns per listed body (x, y, theta), in that order.
+// Columns of a kGround entry are ignored by the assembler.
+#include <Eigen/Core>
+#include <cmath>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace gearkit::kin {
+
+/// The index used for the ground (fixed frame) wherever a body index is expected.
+inline constexpr int kGround = -1;
+
+/// Pose and velocity of one body, all SI: r [m], theta [rad], r_dot [m/s], omega [rad/s].
+struct BodyState {
+  Eigen::Vector2d r = Eigen::Vector2d::Zero();
+  double theta = 0.0;
+  Eigen::Vector2d r_dot = Eigen::Vector2d::Zero();
+  double omega = 0.0;
+};
+
+/// What a constraint is evaluated at.
+struct ConstraintInput {
+  std::span<const BodyState> bodies;  ///< one per entry of Constraint::bodies(); ground is all zero
+  double t = 0.0;                     ///< time [s]
+  double input = 0.0;                 ///< drivers only: the base value f0 of the driven coordinate
+};
+
+/// Where a constraint writes its rows. Sizes: equations() rows; phi_q has 3*bodies().size()
+/// columns. The caller zeroes nothing: a constraint must write every entry of its rows.
+struct ConstraintOutput {
+  Eigen::Ref<Eigen::VectorXd> phi;
+  Eigen::Ref<Eigen::MatrixXd> phi_q;
+  Eigen::Ref<Eigen::VectorXd> phi_t;
+  Eigen::Ref<Eigen::VectorXd> gamma;
+};
+
+/// A set of scleronomic or rheonomic equations between the coordinates of a few bodies.
+class Constraint {
+ public:
+  virtual ~Constraint();
+
+  /// Short kind, e.g. "revolute", "gear_mesh", "angle_driver".
+  virtual std::string kind() const = 0;
+  /// Number of equations (rows). Also what the constraint subtracts in the Gruebler-Kutzbach
+  /// count (a revolute removes 2 freedoms, a pin in slot 1, a gear mesh 1).
+  virtual int equations() const = 0;
+  /// Bodies whose coordinates appear in the equations (kGround allowed).
+  virtual std::vector<int> bodies() const = 0;
+  /// True for drivers (prescribed motions). Drivers are left out of the Gruebler count and of
+  /// the rank test; their Lagrange multiplier is the driving force or torque.
+  virtual bool is_driver() const { return false; }
+  /// Evaluates the rows at `in`. Must not throw and must not allocate on the heap.
+  virtual void evaluate(const ConstraintInput& in, ConstraintOutput& out) const = 0;
+};
+
+// Small helpers shared by the built-in constraints and the plugins' elements.
+
+/// A(theta) s: a body-fixed vector s' [m] expressed in the ground frame.
+inline Eigen::Vector2d rotate(double theta, const Eigen::Vector2d& s) {
+  const double c = std::cos(theta), si = std::sin(theta);
+  return {c * s.x() - si * s.y(), si * s.x() + c * s.y()};
+}
+
+/// The vector v turned by +90 deg (the derivative of A(theta) s with respect to theta is
+/// perp(A s)).
+inline Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
+
+/// z component of the planar cross product a x b.
+inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+}  // namespace gearkit::kin

@@ -1,0 +1,119 @@
+#pragma once
+// Built-in constraints: revolute, prismatic, pin in slot, and the drivers (an angle or a
+// slider displacement prescribed as f(t) = f0 + speed*t + acceleration*t^2/2).
+// All lengths in m, angles in rad, local point coordinates in the body's frame.
+#include <gearkit/kin/constraint.hpp>
+
+namespace gearkit::kin {
+
+/// A point of a body: the body index (or kGround) and its local coordinates [m].
+struct BodyPoint {
+  int body = kGround;
+  Eigen::Vector2d local = Eigen::Vector2d::Zero();
+};
+
+/// Revolute (pin) joint: point a of one body coincides with point b of another. 2 equations:
+/// Phi = r_a - r_b. The multiplier is the force [N] that body b exerts on body a, with the
+/// sign convention F_on_a = -lambda.
+class Revolute final : public Constraint {
+ public:
+  Revolute(BodyPoint a, BodyPoint b) : a_(a), b_(b) {}
+  std::string kind() const override { return "revolute"; }
+  int equations() const override { return 2; }
+  std::vector<int> bodies() const override { return {a_.body, b_.body}; }
+  void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  const BodyPoint& a() const { return a_; }
+  const BodyPoint& b() const { return b_; }
+
+ private:
+  BodyPoint a_, b_;
+};
+
+/// Prismatic joint: `slider` point P slides along the line through `guide` point Q of another
+/// body, with the direction `axis_local` (a unit vector in the guide body's frame); the two
+/// bodies keep the relative angle `relative_angle` [rad] = theta_slider - theta_guide.
+/// 2 equations: theta_s - theta_g - relative_angle = 0 and n . (P - Q) = 0, n normal to the axis.
+class Prismatic final : public Constraint {
+ public:
+  Prismatic(BodyPoint slider, BodyPoint guide, Eigen::Vector2d axis_local, double relative_angle);
+  std::string kind() const override { return "prismatic"; }
+  int equations() const override { return 2; }
+  std::vector<int> bodies() const override { return {slider_.body, guide_.body}; }
+  void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  const BodyPoint& slider() const { return slider_; }
+  const BodyPoint& guide() const { return guide_; }
+  const Eigen::Vector2d& axis_local() const { return axis_; }
+
+ private:
+  BodyPoint slider_, guide_;
+  Eigen::Vector2d axis_;
+  double relative_angle_;
+};
+
+/// Pin in slot (the two-freedom half joint): point P of `pin` body stays on the line through
+/// point Q of `slot` body with direction `axis_local` (slot body's frame). 1 equation.
+class PinInSlot final : public Constraint {
+ public:
+  PinInSlot(BodyPoint pin, BodyPoint slot, Eigen::Vector2d axis_local);
+  std::string kind() const override { return "pin_in_slot"; }
+  int equations() const override { return 1; }
+  std::vector<int> bodies() const override { return {pin_.body, slot_.body}; }
+  void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+
+ private:
+  BodyPoint pin_, slot_;
+  Eigen::Vector2d axis_;
+};
+
+/// A prescribed motion f(t) = f0 + speed*t + acceleration*t^2/2, where f0 comes from the
+/// analysis (ConstraintInput::input) so that one model can be solved at many input values.
+struct Motion {
+  double speed = 0.0;         ///< rad/s or m/s
+  double acceleration = 0.0;  ///< rad/s^2 or m/s^2
+};
+
+/// Drives the angle of body `body` relative to body `reference`: theta_b - theta_ref - f(t) = 0.
+/// The multiplier lambda gives the driving torque applied to `body` (reaction on `reference`):
+/// T = -lambda [N m].
+class AngleDriver final : public Constraint {
+ public:
+  AngleDriver(int body, int reference, Motion motion) : body_(body), reference_(reference), motion_(motion) {}
+  std::string kind() const override { return "angle_driver"; }
+  int equations() const override { return 1; }
+  std::vector<int> bodies() const override { return {body_, reference_}; }
+  bool is_driver() const override { return true; }
+  void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  const Motion& motion() const { return motion_; }
+
+ private:
+  int body_, reference_;
+  Motion motion_;
+};
+
+/// Drives the displacement of a slider along a guide: u . (P - Q) - f(t) = 0, with u the axis
+/// (guide body's frame) and P, Q as in Prismatic. The multiplier gives the driving force along
+/// u applied to the slider: F = -lambda [N].
+class DisplacementDriver final : public Constraint {
+ public:
+  DisplacementDriver(BodyPoint slider, BodyPoint guide, Eigen::Vector2d axis_local, Motion motion);
+  std::string kind() const override { return "displacement_driver"; }
+  int equations() const override { return 1; }
+  std::vector<int> bodies() const override { return {slider_.body, guide_.body}; }
+  bool is_driver() const override { return true; }
+  void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  const Motion& motion() const { return motion_; }
+
+ private:
+  BodyPoint slider_, guide_;
+  Eigen::Vector2d axis_;
+  Motion motion_;
+};
+
+/// One row v . (P - Q) of a projection constraint, where v = A(theta_guide) v_local, P is on body
+/// 0 and Q on body 1 of the input. Writes phi (without any offset), the 6 Jacobian entries and
+/// gamma into row `row` of `out`. Shared by prismatic, pin-in-slot, displacement drivers and
+/// the cam follower element.
+void projection_row(const ConstraintInput& in, const Eigen::Vector2d& p_local, const Eigen::Vector2d& q_local,
+                    const Eigen::Vector2d& v_local, int row, ConstraintOutput& out);
+
+}  // namespace gearkit::kin

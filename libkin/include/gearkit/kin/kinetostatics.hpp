@@ -1,0 +1,61 @@
+#pragma once
+// Kinetostatics at one configuration (after solve_position, solve_velocity,
+// solve_acceleration): driving efforts by virtual power and every constraint reaction by
+// Lagrange multipliers, from masses, centres of mass, inertias, gravity, external forces and
+// torques and linear springs. SI throughout (N, N m).
+//
+// Equations: M qdd + Phi_q^T lambda = Q, i.e. Phi_q^T lambda = Q* with Q* = Q - M qdd the
+// applied forces plus d'Alembert's inertia forces. A driver's effort E_k (torque [N m] or force
+// [N] it applies) satisfies, by virtual power with the virtual motion dq_k of a unit input,
+//     E_k + Q* . dq_k = 0,
+// and also E_k = -lambda_k (its multiplier). The two are computed independently.
+#include <gearkit/kin/data.hpp>
+#include <string>
+#include <vector>
+
+namespace gearkit::kin {
+
+/// The reaction carried by one constraint, as the force and moment it exerts on its first body.
+struct ConstraintReaction {
+  int constraint = 0;
+  std::string name, kind;
+  int body = kGround;                          ///< the first body of the constraint
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< revolute: on `body` from its partner [N]
+  double moment = 0.0;                         ///< prismatic: moment on the slider about its point [N m]
+  Eigen::VectorXd lambda;                      ///< the raw multipliers of its rows
+};
+
+/// A massless, unloaded link with exactly two revolute joints: the force is along the line of
+/// the joints.
+struct TwoForceMember {
+  int body = 0;
+  std::string name;
+  double axial_force = 0.0;  ///< [N], positive in tension, negative in compression
+  bool tension() const { return axial_force > 0.0; }
+};
+
+struct ForceAnalysis {
+  Eigen::VectorXd applied;               ///< Q* = Q - M qdd, per coordinate
+  Eigen::VectorXd lambda;                ///< multipliers, one per equation
+  std::vector<double> effort_lagrange;   ///< per driver: -lambda [N m or N]
+  std::vector<double> effort_virtual_power;  ///< per driver: -Q* . dq_k
+  std::vector<ConstraintReaction> reactions;  ///< non-driver constraints
+  std::vector<TwoForceMember> two_force_members;
+  bool determinate = true;               ///< false for redundant models (reactions not unique)
+};
+
+/// Generalised applied and inertia forces Q* at the current state.
+Eigen::VectorXd applied_forces(const Model& model, const Data& data);
+
+/// Potential energy of gravity and springs [J] at data.q (for energy balances).
+double potential_energy(const Model& model, const Data& data);
+
+/// Kinetic energy [J] at data.q, data.qd.
+double kinetic_energy(const Model& model, const Data& data);
+
+/// Full kinetostatic analysis; stores lambda in data.lambda. Needs a factorised Jacobian at a
+/// regular configuration. @throws std::runtime_error if Phi_q is singular there (a dead point:
+/// the driving effort is unbounded).
+ForceAnalysis solve_forces(const Model& model, Data& data);
+
+}  // namespace gearkit::kin

@@ -1,0 +1,129 @@
+#pragma once
+// The immutable description of a planar mechanism (Pinocchio's Model): bodies with named
+// points and mass properties, constraints (joints, drivers, plugin elements) and loads.
+// Build it once with the add_* functions; every analysis takes it as `const Model&` and keeps
+// its per-analysis state in a Data (data.hpp). All quantities SI: m, rad, kg, kg m^2, N, N m.
+#include <gearkit/kin/constraint.hpp>
+#include <gearkit/kin/joints.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gearkit::kin {
+
+/// A rigid link. Its frame is where its local point coordinates are measured from; the angle
+/// of the body is the angle of its local x axis.
+struct Body {
+  std::string name;
+  std::vector<std::pair<std::string, Eigen::Vector2d>> points;  ///< named points, local [m]
+  double mass = 0.0;                                           ///< [kg]
+  Eigen::Vector2d centre_of_mass = Eigen::Vector2d::Zero();    ///< local [m]
+  double inertia = 0.0;                                        ///< about the centre of mass [kg m^2]
+  /// Starting pose for the first position analysis (the drawn configuration; selects the
+  /// assembly branch). position in [m], angle in [rad].
+  Eigen::Vector2d position_guess = Eigen::Vector2d::Zero();
+  double angle_guess = 0.0;
+
+  /// Local coordinates of a named point, or nullopt.
+  std::optional<Eigen::Vector2d> point(const std::string& point_name) const;
+};
+
+/// A constraint with its name (for messages and reaction tables) and first row in Phi.
+struct ModelConstraint {
+  std::string name;
+  std::shared_ptr<const Constraint> constraint;
+  int first_row = 0;
+};
+
+/// The coordinate a driver prescribes.
+enum class DriverQuantity { angle, displacement };
+
+struct Driver {
+  int constraint = 0;           ///< index in Model::constraints()
+  DriverQuantity quantity = DriverQuantity::angle;
+  double value = 0.0;           ///< default f0 [rad or m]
+};
+
+/// A force [N] (ground frame) applied at a point of a body.
+struct PointForce {
+  BodyPoint at;
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();
+  std::string name;
+};
+
+/// A torque [N m] (counter-clockwise positive) applied to a body.
+struct BodyTorque {
+  int body = 0;
+  double torque = 0.0;
+  std::string name;
+};
+
+/// A linear spring between two points: tension F = stiffness * (L - free_length) + preload
+/// pulls the points together (negative F pushes them apart).
+struct Spring {
+  BodyPoint a, b;
+  double stiffness = 0.0;    ///< [N/m]
+  double free_length = 0.0;  ///< [m]
+  double preload = 0.0;      ///< [N], tension at L = free_length
+  std::string name;
+};
+
+class Model {
+ public:
+  /// Adds a moving body. @returns its index. @throws std::invalid_argument on a duplicate name.
+  int add_body(Body body);
+  /// Adds a constraint. Drivers are also listed in drivers(). @returns its index.
+  /// @throws std::invalid_argument if it names a body index out of range or its name repeats.
+  int add_constraint(std::string name, std::shared_ptr<const Constraint> constraint);
+  /// Marks constraint `constraint` (a driver) with what it drives and its default value.
+  void set_driver(int constraint, DriverQuantity quantity, double value);
+
+  void add_force(PointForce f) { forces_.push_back(std::move(f)); }
+  void add_torque(BodyTorque t) { torques_.push_back(std::move(t)); }
+  void add_spring(Spring s) { springs_.push_back(std::move(s)); }
+  void set_gravity(const Eigen::Vector2d& g) { gravity_ = g; }  ///< [m/s^2], e.g. (0, -9.81)
+
+  /// The ground's named points (local = global).
+  Body& ground() { return ground_; }
+  const Body& ground() const { return ground_; }
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const std::vector<ModelConstraint>& constraints() const { return constraints_; }
+  const std::vector<Driver>& drivers() const { return drivers_; }
+  const std::vector<PointForce>& forces() const { return forces_; }
+  const std::vector<BodyTorque>& torques() const { return torques_; }
+  const std::vector<Spring>& springs() const { return springs_; }
+  const Eigen::Vector2d& gravity() const { return gravity_; }
+
+  int coordinates() const { return 3 * static_cast<int>(bodies_.size()); }
+  int equations() const { return equations_; }
+  /// Index of a body by name; kGround for "ground"; nullopt if unknown.
+  std::optional<int> body_index(const std::string& name) const;
+  const std::string& body_name(int index) const;
+  /// Index of a constraint by name, or nullopt.
+  std::optional<int> constraint_index(const std::string& name) const;
+  /// Global position of the body's points in the pose q (any vector of coordinates).
+  static Eigen::Vector2d point_position(const Eigen::VectorXd& q, const BodyPoint& p);
+  /// True if there are masses, forces, torques or springs to analyse.
+  bool has_loads() const;
+
+ private:
+  Body ground_ = named_ground();
+  static Body named_ground() {
+    Body g;
+    g.name = "ground";
+    return g;
+  }
+  std::vector<Body> bodies_;
+  std::vector<ModelConstraint> constraints_;
+  std::vector<Driver> drivers_;
+  std::vector<PointForce> forces_;
+  std::vector<BodyTorque> torques_;
+  std::vector<Spring> springs_;
+  Eigen::Vector2d gravity_ = Eigen::Vector2d::Zero();
+  int equations_ = 0;
+};
+
+}  // namespace gearkit::kin

@@ -1,0 +1,74 @@
+#pragma once
+// Sweeps of one driver's input over a range, keeping the assembly branch continuous, with dead
+// points (where the driver can no longer move the mechanism) and the extremes of chosen outputs
+// (limit positions) located precisely.
+#include <gearkit/kin/output.hpp>
+#include <gearkit/kin/solve.hpp>
+#include <string>
+#include <vector>
+
+namespace gearkit::kin {
+
+struct SweepOptions {
+  int driver = 0;            ///< index in Model::drivers()
+  double start = 0.0;        ///< first input value [rad or m]
+  double end = 0.0;          ///< last input value
+  double step = 0.0;         ///< spacing of the samples (sign is taken from end - start); > 0
+  SolverOptions solver;
+  std::vector<Output> outputs;  ///< their extremes are located
+  /// Smallest continuation step [same unit as the input] before a failure to continue is
+  /// declared a dead point; also the precision of the dead point's input.
+  double min_step = 1e-10;
+  bool velocities = true;    ///< also solve qd and qdd at every sample
+};
+
+struct SweepSample {
+  double input = 0.0;
+  Eigen::VectorXd q, qd, qdd;
+  int iterations = 0;
+};
+
+/// A configuration where the driven coordinate cannot go on: the dependent Jacobian turns
+/// singular (toggle or limit position of the input, a change point).
+struct DeadPoint {
+  double input = 0.0;        ///< located to options.min_step
+  Eigen::VectorXd q;         ///< the last assembled configuration before it
+  std::string description;
+};
+
+/// A located extreme of an output over the input (a limit position of that output, where its
+/// velocity ratio to the input vanishes).
+struct OutputExtreme {
+  int output = 0;            ///< index in SweepOptions::outputs
+  bool maximum = false;
+  double input = 0.0;        ///< where the derivative vanishes (secant/bisection to 1e-12)
+  double value = 0.0;        ///< the output there
+  Eigen::VectorXd q;         ///< configuration there
+  Eigen::VectorXd dq;        ///< dq/d(input) there: velocity ratios
+};
+
+struct SweepResult {
+  std::vector<SweepSample> samples;      ///< in sweep order; stops at a dead point
+  std::vector<DeadPoint> dead_points;
+  std::vector<OutputExtreme> extremes;
+  bool assembled = false;                ///< false if the first input could not be assembled
+  bool complete = false;                 ///< true if the sweep reached `end`
+  std::string message;                   ///< why it stopped early; empty if complete
+};
+
+/// Sweeps driver `options.driver` from start to end. The first position is assembled from
+/// data.q (the drawn configuration or a user's guess, which picks the branch). Each next
+/// position starts from a second-order prediction along the input sensitivity; a step that
+/// does not converge, changes the sign of det(Phi_q) or jumps more than 0.1 rad beyond the
+/// prediction is halved, down to options.min_step, where a dead point is declared and the
+/// sweep stops (it never jumps across a toggle to another branch). The other drivers keep
+/// their data.inputs values. Bounded: at most ~60 halvings of max_iterations each per sample.
+/// @throws std::invalid_argument for a bad driver index or step <= 0.
+SweepResult sweep(const Model& model, Data& data, const SweepOptions& options);
+
+/// Assembles at input `value` of driver `driver` (starting from data.q), then solves velocity
+/// and acceleration. @returns the position report; qd/qdd are valid only if it converged and
+/// the Jacobian is regular.
+PositionReport solve_at(const Model& model, Data& data, int driver, double value, const SolverOptions& options = {});
+
+}  // namespace gearkit::kin

@@ -1,0 +1,76 @@
+#include <gearkit/kin/model.hpp>
+
+#include <stdexcept>
+
+namespace gearkit::kin {
+
+std::optional<Eigen::Vector2d> Body::point(const std::string& point_name) const {
+  for (const auto& [name, local] : points)
+    if (name == point_name) return local;
+  return std::nullopt;
+}
+
+int Model::add_body(Body body) {
+  if (body.name == ground_.name || body_index(body.name))
+    throw std::invalid_argument("duplicate body name '" + body.name + "'");
+  bodies_.push_back(std::move(body));
+  return static_cast<int>(bodies_.size()) - 1;
+}
+
+int Model::add_constraint(std::string name, std::shared_ptr<const Constraint> constraint) {
+  if (!constraint) throw std::invalid_argument("constraint '" + name + "' is empty");
+  if (constraint_index(name)) throw std::invalid_argument("duplicate constraint name '" + name + "'");
+  for (int b : constraint->bodies())
+    if (b != kGround && (b < 0 || b >= static_cast<int>(bodies_.size())))
+      throw std::invalid_argument("constraint '" + name + "' names body index " + std::to_string(b) +
+                                  " of a model with " + std::to_string(bodies_.size()) + " bodies");
+  const int rows = constraint->equations();
+  const bool driver = constraint->is_driver();
+  constraints_.push_back({std::move(name), std::move(constraint), equations_});
+  equations_ += rows;
+  const int index = static_cast<int>(constraints_.size()) - 1;
+  if (driver) drivers_.push_back({index, DriverQuantity::angle, 0.0});
+  return index;
+}
+
+void Model::set_driver(int constraint, DriverQuantity quantity, double value) {
+  for (Driver& d : drivers_)
+    if (d.constraint == constraint) {
+      d.quantity = quantity;
+      d.value = value;
+      return;
+    }
+  throw std::invalid_argument("constraint " + std::to_string(constraint) + " is not a driver");
+}
+
+std::optional<int> Model::body_index(const std::string& name) const {
+  if (name == ground_.name) return kGround;
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+    if (bodies_[i].name == name) return static_cast<int>(i);
+  return std::nullopt;
+}
+
+const std::string& Model::body_name(int index) const {
+  return index == kGround ? ground_.name : bodies_.at(static_cast<std::size_t>(index)).name;
+}
+
+std::optional<int> Model::constraint_index(const std::string& name) const {
+  for (std::size_t i = 0; i < constraints_.size(); ++i)
+    if (constraints_[i].name == name) return static_cast<int>(i);
+  return std::nullopt;
+}
+
+Eigen::Vector2d Model::point_position(const Eigen::VectorXd& q, const BodyPoint& p) {
+  if (p.body == kGround) return p.local;
+  const int k = 3 * p.body;
+  return Eigen::Vector2d(q(k), q(k + 1)) + rotate(q(k + 2), p.local);
+}
+
+bool Model::has_loads() const {
+  if (!forces_.empty() || !torques_.empty() || !springs_.empty()) return true;
+  for (const Body& b : bodies_)
+    if (b.mass > 0.0 || b.inertia > 0.0) return true;
+  return false;
+}
+
+}  // namespace gearkit::kin

@@ -1,0 +1,30 @@
+#pragma once
+// Reading a cam model file (YAML, documented in docs/cam.md) into a libcam design.
+#include <gearkit/cam/cam_design.hpp>
+
+#include <optional>
+#include <string>
+
+namespace gearkit::plugins::cam {
+
+struct CamModel {
+  explicit CamModel(gearkit::cam::CamDesign d) : design(std::move(d)) {}
+
+  gearkit::cam::CamDesign design;
+  std::string name;
+  std::optional<double> omega;        ///< cam speed [rad/s], for per-second values
+  double pressure_angle_limit = 0;    ///< [rad]
+  double tolerance_mm = 1e-3;         ///< arc fit tolerance
+  int samples = 360;                  ///< cam angles in the report's profile points and CSV
+  double follower_at = 0;             ///< cam angle of the follower in the SVG drawing [rad]
+  std::optional<double> cutter_radius_mm;
+};
+
+/// Loads and validates a cam model.
+/// @throws io::InputError "file:line:col: expected ..., found ..." for malformed YAML, unknown
+///         keys, bad quantities, segments that leave gaps or overlap or do not cover 360 deg,
+///         zero-duration segments, negative radii, a base circle smaller than the roller, or a
+///         follower that cannot reach the cam.
+CamModel load_cam_model(const std::string& path);
+
+}  // namespace gearkit::plugins::cam

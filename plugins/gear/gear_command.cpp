@@ -1,0 +1,59 @@
+// `gearkit gear ...`: the gear table of a cylindrical involute pair (libgear) with its checks,
+// measurements and, on request, the tooth-form drawing (SVG/DXF).
+#include "gear_command.hpp"
+
+#include "gear_options.hpp"
+#include "gear_report.hpp"
+
+#include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/io/atomic_file.hpp>
+#include <gearkit/io/command_line.hpp>
+#include <gearkit/io/drawing.hpp>
+#include <gearkit/io/error.hpp>
+
+#include <fmt/format.h>
+
+namespace gearkit::plugins::gear {
+
+namespace gg = gearkit::gear;
+
+namespace {
+
+constexpr std::string_view kUsage =
+    "gearkit gear --z1 N --z2 N --module LEN [--pressure-angle 20] [--helix-angle 0] "
+    "[--x1 X --x2 X | --center-distance LEN [--x1 X | --split balanced|proportional]] [--internal] [--transverse] "
+    "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--center-distance-deviation LEN] "
+    "[--pin-diameter LEN] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] [--draw pair|gear1|gear2]";
+
+}  // namespace
+
+int run_gear_command(kin::CommandContext& context) {
+  io::po::options_description desc("gearkit gear options (bare numbers: mm and deg)");
+  add_gear_options(desc);
+  io::add_common_options(desc);
+  io::po::positional_options_description none;
+  io::po::variables_map vm;
+  if (!io::parse_command_line(context.args, desc, none, vm, kUsage, context.out)) return 0;
+  const GearCommandOptions options = read_gear_options(vm);
+  const io::CommonOptions common = io::common_options(vm);
+
+  gg::GearPairResult result;
+  try {
+    result = gg::compute_gear_pair(options.input);
+  } catch (const gg::GeometryError& e) {
+    io::fail_option(fmt::format("--{}", option_for_field(e.field())), e.what());
+  }
+
+  if (!options.svg.empty() || !options.dxf.empty()) {
+    const io::Drawing drawing = gear_drawing(options.input, result, options.draw);
+    if (!options.svg.empty()) {
+      io::SvgOptions svg;
+      svg.title = fmt::format("gearkit gear: z1 = {}, z2 = {}", options.input.z1, options.input.z2);
+      io::write_file_atomic(options.svg, io::to_svg(drawing, svg), "--svg");
+    }
+    if (!options.dxf.empty()) io::write_file_atomic(options.dxf, io::to_dxf(drawing), "--dxf");
+  }
+  return io::emit(gear_report(options.input, result), common, context.out);
+}
+
+}  // namespace gearkit::plugins::gear

@@ -1,0 +1,207 @@
+#include "gear_options.hpp"
+
+#include <gearkit/io/error.hpp>
+#include <gearkit/io/quantity.hpp>
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace gearkit::plugins::gear {
+
+namespace gg = gearkit::gear;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+[[noreturn]] void fail(std::string_view key, std::string_view message) {
+  io::fail_option(fmt::format("--{}", key), message);
+}
+
+bool given(const io::po::variables_map& vm, const char* key) { return vm.count(key) > 0; }
+
+std::string text_of(const io::po::variables_map& vm, const char* key) { return vm[key].as<std::string>(); }
+
+int teeth(const io::po::variables_map& vm, const char* key) {
+  const std::string s = text_of(vm, key);
+  int value = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (s.empty() || ec != std::errc() || end != s.data() + s.size()) {
+    fail(key, fmt::format("expected a whole number of teeth, found '{}'", s));
+  }
+  if (value <= 0) fail(key, fmt::format("expected a number of teeth >= 1, found {}", value));
+  if (value > 100000) fail(key, fmt::format("expected at most 100000 teeth, found {}", value));
+  return value;
+}
+
+double quantity(const io::po::variables_map& vm, const char* key, io::Quantity q, const char* unit, double scale) {
+  const std::string s = text_of(vm, key);
+  try {
+    return io::parse_quantity_si(s, q, unit) * scale;
+  } catch (const io::QuantityError& e) {
+    fail(key, e.what());
+  }
+}
+
+double length_mm(const io::po::variables_map& vm, const char* key) {
+  return quantity(vm, key, io::Quantity::length, "mm", 1000.0);
+}
+
+double angle_rad(const io::po::variables_map& vm, const char* key) { return quantity(vm, key, io::Quantity::angle, "deg", 1.0); }
+
+double number(const io::po::variables_map& vm, const char* key) {
+  return quantity(vm, key, io::Quantity::dimensionless, "", 1.0);
+}
+
+void exclusive(const io::po::variables_map& vm, const char* a, const char* b, std::string_view why) {
+  if (given(vm, a) && given(vm, b)) fail(b, fmt::format("cannot be combined with --{}: {}", a, why));
+}
+
+}  // namespace
+
+void add_gear_options(io::po::options_description& desc) {
+  namespace po = io::po;
+  desc.add_options()
+      ("z1", po::value<std::string>()->required()->value_name("N"), "teeth of gear 1 (pinion)")
+      ("z2", po::value<std::string>()->required()->value_name("N"), "teeth of gear 2 (wheel, or ring with --internal)")
+      ("module", po::value<std::string>()->required()->value_name("LEN"), "module (normal; transverse with --transverse), mm")
+      ("pressure-angle", po::value<std::string>()->value_name("ANGLE"), "pressure angle, deg (default 20)")
+      ("helix-angle", po::value<std::string>()->value_name("ANGLE"), "helix angle, deg (default 0: spur)")
+      ("x1", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 1 (default 0)")
+      ("x2", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 2 (default 0; ISO sign for a ring)")
+      ("center-distance", po::value<std::string>()->value_name("LEN"),
+       "working centre distance, mm: the shift sum follows from it (with --x1: x2 = sum - x1)")
+      ("split", po::value<std::string>()->value_name("balanced|proportional|user"),
+       "split of the shift sum with --center-distance (default balanced specific sliding; user with --x1)")
+      ("internal", po::bool_switch(), "gear 2 is an internal gear (ring); z2 > z1")
+      ("transverse", po::bool_switch(), "module and pressure angle are given in the transverse section")
+      ("no-tip-shortening", po::bool_switch(), "keep d_a = d + 2 m (h_aP + x) even when k > 0")
+      ("addendum", po::value<std::string>()->value_name("COEF"), "rack addendum coefficient h_aP* (default 1)")
+      ("dedendum", po::value<std::string>()->value_name("COEF"), "rack dedendum coefficient h_fP* (default 1.25)")
+      ("root-radius", po::value<std::string>()->value_name("COEF"), "rack root radius coefficient rho_fP* (default 0.38)")
+      ("face-width", po::value<std::string>()->value_name("LEN"), "face width b, mm (overlap ratio)")
+      ("backlash", po::value<std::string>()->value_name("LEN"), "target normal backlash j_bn, mm: sets equal thickness allowances")
+      ("allowance1", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn1, mm (negative: thinner)")
+      ("allowance2", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn2, mm (negative: thinner)")
+      ("center-distance-deviation", po::value<std::string>()->value_name("LEN"), "centre distance deviation A_a, mm")
+      ("pin-diameter", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for both gears, mm")
+      ("pin-diameter1", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 1, mm")
+      ("pin-diameter2", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 2, mm")
+      ("svg", po::value<std::string>()->value_name("FILE"), "write the drawing as SVG")
+      ("dxf", po::value<std::string>()->value_name("FILE"), "write the drawing as DXF (R2000, mm)")
+      ("draw", po::value<std::string>()->value_name("pair|gear1|gear2"), "what --svg/--dxf draw (default pair)");
+}
+
+GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
+  GearCommandOptions o;
+  gg::GearPairInput& in = o.input;
+  in.z1 = teeth(vm, "z1");
+  in.z2 = teeth(vm, "z2");
+  in.internal = vm["internal"].as<bool>();
+  in.system = vm["transverse"].as<bool>() ? gg::ModuleSystem::transverse : gg::ModuleSystem::normal;
+  in.apply_tip_shortening = !vm["no-tip-shortening"].as<bool>();
+  if (in.internal && in.z2 <= in.z1) {
+    fail("z2", fmt::format("an internal gear (ring) needs more teeth than its pinion: expected z2 > {}, found {}",
+                                      in.z1, in.z2));
+  }
+  in.module = length_mm(vm, "module");
+  if (!(in.module > 0.0)) fail("module", fmt::format("expected a module > 0 mm, found {} mm", in.module));
+  if (given(vm, "pressure-angle")) {
+    in.pressure_angle = angle_rad(vm, "pressure-angle");
+    if (!(in.pressure_angle > 0.0 && in.pressure_angle < 45.0 * kDeg)) {
+      fail("pressure-angle", fmt::format("expected an angle in (0, 45) deg, found {} deg", in.pressure_angle / kDeg));
+    }
+  }
+  if (given(vm, "helix-angle")) {
+    in.helix_angle = angle_rad(vm, "helix-angle");
+    if (!(std::fabs(in.helix_angle) < 45.0 * kDeg)) {
+      fail("helix-angle", fmt::format("expected an angle in (-45, 45) deg, found {} deg", in.helix_angle / kDeg));
+    }
+  }
+  if (given(vm, "addendum")) in.h_aP = number(vm, "addendum");
+  if (given(vm, "dedendum")) in.h_fP = number(vm, "dedendum");
+  if (given(vm, "root-radius")) in.rho_fP = number(vm, "root-radius");
+  if (!(in.h_aP > 0.0)) fail("addendum", fmt::format("expected a coefficient > 0, found {}", in.h_aP));
+  if (!(in.h_fP >= in.h_aP)) {
+    fail("dedendum", fmt::format("expected a coefficient >= the addendum coefficient {}, found {}", in.h_aP, in.h_fP));
+  }
+  if (!(in.rho_fP >= 0.0)) fail("root-radius", fmt::format("expected a coefficient >= 0, found {}", in.rho_fP));
+
+  exclusive(vm, "center-distance", "x2", "x2 follows from the centre distance (give --x1 to fix the split)");
+  if (given(vm, "x1")) in.x1 = number(vm, "x1");
+  if (given(vm, "x2")) in.x2 = number(vm, "x2");
+  if (given(vm, "center-distance")) {
+    in.center_distance = length_mm(vm, "center-distance");
+    if (!(*in.center_distance > 0.0)) {
+      fail("center-distance", fmt::format("expected a centre distance > 0 mm, found {} mm", *in.center_distance));
+    }
+    in.split = given(vm, "x1") ? gg::ShiftSplit::user_x1 : gg::ShiftSplit::balanced_sliding;
+  }
+  if (given(vm, "split")) {
+    if (!in.center_distance) fail("split", "only applies with --center-distance");
+    const std::string s = text_of(vm, "split");
+    const std::map<std::string, gg::ShiftSplit> splits = {
+        {"balanced", gg::ShiftSplit::balanced_sliding}, {"proportional", gg::ShiftSplit::proportional}, {"user", gg::ShiftSplit::user_x1}};
+    const auto it = splits.find(s);
+    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional or user, found '{}'", s));
+    if (given(vm, "x1") && it->second != gg::ShiftSplit::user_x1) {
+      fail("split", fmt::format("'{}' contradicts --x1 (a given x1 means the user split)", s));
+    }
+    if (!given(vm, "x1") && it->second == gg::ShiftSplit::user_x1) fail("split", "'user' needs --x1");
+    in.split = it->second;
+  }
+
+  if (given(vm, "face-width")) {
+    in.face_width = length_mm(vm, "face-width");
+    if (!(in.face_width >= 0.0)) fail("face-width", fmt::format("expected a width >= 0 mm, found {} mm", in.face_width));
+  }
+  exclusive(vm, "allowance1", "backlash", "the allowances follow from the target backlash");
+  exclusive(vm, "allowance2", "backlash", "the allowances follow from the target backlash");
+  if (given(vm, "backlash")) {
+    in.backlash_target = length_mm(vm, "backlash");
+    if (!(*in.backlash_target >= 0.0)) {
+      fail("backlash", fmt::format("expected a backlash >= 0 mm, found {} mm", *in.backlash_target));
+    }
+  }
+  if (given(vm, "allowance1")) in.A_sn1 = length_mm(vm, "allowance1");
+  if (given(vm, "allowance2")) in.A_sn2 = length_mm(vm, "allowance2");
+  if (given(vm, "center-distance-deviation")) in.A_a = length_mm(vm, "center-distance-deviation");
+
+  exclusive(vm, "pin-diameter", "pin-diameter1", "--pin-diameter already sets both gears");
+  exclusive(vm, "pin-diameter", "pin-diameter2", "--pin-diameter already sets both gears");
+  for (const char* key : {"pin-diameter", "pin-diameter1", "pin-diameter2"}) {
+    if (!given(vm, key)) continue;
+    const double D = length_mm(vm, key);
+    if (!(D > 0.0)) fail(key, fmt::format("expected a diameter > 0 mm, found {} mm", D));
+    const std::string k = key;
+    if (k != "pin-diameter2") in.pin_diameter1 = D;
+    if (k != "pin-diameter1") in.pin_diameter2 = D;
+  }
+
+  if (given(vm, "svg")) o.svg = text_of(vm, "svg");
+  if (given(vm, "dxf")) o.dxf = text_of(vm, "dxf");
+  if (given(vm, "draw")) {
+    o.draw = text_of(vm, "draw");
+    if (o.draw != "pair" && o.draw != "gear1" && o.draw != "gear2") {
+      fail("draw", fmt::format("expected pair, gear1 or gear2, found '{}'", o.draw));
+    }
+    if (o.svg.empty() && o.dxf.empty()) fail("draw", "needs --svg or --dxf");
+  }
+  return o;
+}
+
+std::string option_for_field(const std::string& field) {
+  static const std::map<std::string, std::string> options = {
+      {"z1", "z1"}, {"z2", "z2"}, {"module", "module"}, {"pressure_angle", "pressure-angle"},
+      {"helix_angle", "helix-angle"}, {"face_width", "face-width"}, {"x1", "x1"}, {"x2", "x2"},
+      {"center_distance", "center-distance"}, {"backlash_target", "backlash"}, {"A_a", "center-distance-deviation"},
+      {"pin_diameter1", "pin-diameter1"}, {"pin_diameter2", "pin-diameter2"}, {"rack", "root-radius"}};
+  const auto it = options.find(field);
+  return it == options.end() ? field : it->second;
+}
+
+}  // namespace gearkit::plugins::gear

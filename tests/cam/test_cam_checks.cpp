@@ -1,0 +1,118 @@
+// Tests of gearkit/cam/cam_checks.hpp: extremes and where they occur, undercut, smallest base
+// circle (closed form cross-checked by evaluating the design it returns).
+#include <gearkit/cam/cam_checks.hpp>
+
+#include "cam_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace gearkit::cam;
+using gearkit::cam::testing::oscillating;
+using gearkit::cam::testing::rad;
+using gearkit::cam::testing::translating;
+
+double max_abs_pressure_angle(const CamDesign& d, int n = 7200) {
+  double worst = 0;
+  for (int i = 0; i < n; ++i) worst = std::max(worst, std::abs(contact_at(d, 2 * M_PI * i / n).pressure_angle));
+  return worst;
+}
+
+TEST(CamChecks, RadialRollerCycloidalPressureAngleAndCurvature) {
+  const CamDesign d{gearkit::cam::testing::rise_dwell_return(20), translating(Contact::roller, 10), 40, Rotation::ccw};
+  validate(d);
+  const CamChecks c = check_design(d, {3600, rad(30)});
+  // Independent brute force of tan(phi) = s' / (Rp + s) (radial follower, Norton eq. 8.31).
+  double worst = 0, at = 0;
+  for (int i = 0; i < 36000; ++i) {
+    const double t = 2 * M_PI * i / 36000;
+    const Motion m = d.program.at(t);
+    const double phi = std::atan(m.ds / (50 + m.s));
+    if (std::abs(phi) > worst) worst = std::abs(phi), at = t;
+  }
+  EXPECT_NEAR(std::abs(c.pressure_angle_max.value), worst, 1e-5);
+  EXPECT_NEAR(std::remainder(c.pressure_angle_max.theta - at, 2 * M_PI), 0, rad(0.2));
+  EXPECT_FALSE(c.pressure_angle_exceeded);
+  EXPECT_FALSE(c.undercut);
+  // The base dwell (radius 50 pitch, 40 profile) is convex; the rise is flatter than the base here.
+  EXPECT_LE(c.rho_pitch_min.value, 50 + 1e-9);
+  EXPECT_NEAR(c.rho_profile_min.value, c.rho_pitch_min.value - 10, 1e-9);
+  EXPECT_EQ(c.samples.size(), 3600u);
+}
+
+TEST(CamChecks, UndercutWhenTheRollerExceedsThePitchCurvesRadius) {
+  // A steep rise on a small cam: find the pitch curve's smallest convex radius with a small
+  // roller, then ask for a roller larger than it.
+  const auto program = MotionProgram({gearkit::cam::testing::move(SegmentKind::rise, 0, 45, Law::cycloidal, 30),
+                                      gearkit::cam::testing::move(SegmentKind::fall, 45, 90, Law::cycloidal, 30),
+                                      gearkit::cam::testing::dwell(90, 360)});
+  const CamDesign small{program, translating(Contact::roller, 2), 30, Rotation::ccw};
+  validate(small);
+  const CamChecks ok = check_design(small, {3600, rad(30)});
+  ASSERT_TRUE(std::isfinite(ok.rho_pitch_min.value));
+  EXPECT_FALSE(ok.undercut);
+  // Growing the roller by dr and shrinking the base circle by dr keeps the pitch curve.
+  const double big_roller = ok.rho_pitch_min.value + 1;
+  const CamDesign big{program, translating(Contact::roller, big_roller), 32 - big_roller, Rotation::ccw};
+  ASSERT_GE(big.base_radius, big_roller);
+  validate(big);
+  const CamChecks bad = check_design(big, {3600, rad(30)});
+  EXPECT_NEAR(bad.rho_pitch_min.value, ok.rho_pitch_min.value, 1e-9);
+  EXPECT_TRUE(bad.undercut);
+  EXPECT_NEAR(bad.rho_profile_min.value, -1, 1e-9);
+  EXPECT_FALSE(bad.undercut_ranges.empty());
+}
+
+TEST(CamChecks, SmallestBaseRadiusMeetsThePressureAngleLimitExactly) {
+  for (double offset : {0.0, 8.0}) {
+    const CamDesign d{gearkit::cam::testing::rise_dwell_return(25), translating(Contact::roller, 10, offset), 40,
+                      Rotation::cw};
+    validate(d);
+    const double rb = smallest_base_radius(d, rad(25), 7200);
+    CamDesign at_limit = d;
+    at_limit.base_radius = rb;
+    validate(at_limit);
+    EXPECT_NEAR(max_abs_pressure_angle(at_limit), rad(25), rad(0.01)) << offset;
+    at_limit.base_radius = rb * 0.97;
+    EXPECT_GT(max_abs_pressure_angle(at_limit), rad(25)) << offset;
+  }
+}
+
+TEST(CamChecks, SmallestBaseRadiusForAnOscillatingFollowerByBisection) {
+  const CamDesign d{MotionProgram({gearkit::cam::testing::move(SegmentKind::rise, 0, 120, Law::cycloidal, rad(20)),
+                                   gearkit::cam::testing::dwell(120, 180),
+                                   gearkit::cam::testing::move(SegmentKind::fall, 180, 300, Law::cycloidal, rad(20)),
+                                   gearkit::cam::testing::dwell(300, 360)}),
+                    oscillating(Contact::roller, 150, 110, 10), 40, Rotation::ccw};
+  validate(d);
+  const double rb = smallest_base_radius(d, rad(30), 1440);
+  CamDesign at_limit = d;
+  at_limit.base_radius = rb;
+  EXPECT_LE(max_abs_pressure_angle(at_limit), rad(30) + rad(0.05));
+  at_limit.base_radius = rb * 0.95;
+  EXPECT_GT(max_abs_pressure_angle(at_limit), rad(30));
+}
+
+TEST(CamChecks, FlatFaceWidthAndConvexity) {
+  const CamDesign d{gearkit::cam::testing::rise_dwell_return(15, Law::polynomial_345), translating(Contact::flat_face),
+                    30, Rotation::ccw};
+  validate(d);
+  const CamChecks c = check_design(d, {3600, rad(30)});
+  // The contact runs over +-max|s'|: 3-4-5 peak velocity 1.875 L / beta.
+  const double vmax = 1.875 * 15 / rad(120);
+  EXPECT_NEAR(c.face_max, vmax, 1e-3);
+  EXPECT_NEAR(c.face_min, -vmax, 1e-3);
+  // Convex iff Rb > max(-(s + s'')): the base radius found is that bound.
+  double need = 0;
+  for (int i = 0; i < 36000; ++i) {
+    const Motion m = d.program.at(2 * M_PI * i / 36000);
+    need = std::max(need, -(m.s + m.d2s));
+  }
+  EXPECT_NEAR(c.base_radius_min, need, 1e-3);
+  EXPECT_EQ(c.undercut, 30 < need);
+}
+
+}  // namespace

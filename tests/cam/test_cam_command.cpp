@@ -1,0 +1,237 @@
+// CLI tests of `gearkit cam` (the cam plugin): reports, exports checked by ezdxf against the
+// computed profile, and bad input.
+#include "cam_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using gearkit::cam::testing::ezdxf_check;
+using gearkit::cam::testing::gearkit;
+using gearkit::cam::testing::quoted;
+using gearkit::cam::testing::run;
+using gearkit::cam::testing::scratch_dir;
+
+fs::path example(const std::string& name) { return fs::path(GEARKIT_SOURCE_DIR) / "examples" / "cams" / name; }
+
+nlohmann::json run_json(const std::string& args) {
+  const auto r = run(gearkit() + args + " --format json");
+  EXPECT_EQ(r.status, 0) << r.errors;
+  try {
+    return nlohmann::json::parse(r.output);
+  } catch (const nlohmann::json::exception&) {
+    ADD_FAILURE() << r.output;
+    return {};
+  }
+}
+
+fs::path write_model(const std::string& name, const std::string& text) {
+  const fs::path p = scratch_dir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+TEST(CamCommand, Otm2015Problem2Report) {
+  const auto j = run_json(quoted(example("otm2015_p2_oscillating_cycloidal.yaml")));
+  for (const char* key : {"pressure_angle_max_deg", "pressure_angle_max_at_deg", "rho_min_mm", "rho_min_at_deg",
+                          "undercut", "profile_points", "warnings"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_FALSE(j["undercut"].get<bool>());
+  EXPECT_EQ(j["profile_points"].size(), 360u);
+  // The exam's motion climbs 57.3 deg in 60 deg of cam: with any reasonable arm the pressure
+  // angle exceeds the 45 deg limit, and the report says so.
+  EXPECT_GT(j["pressure_angle_max_deg"].get<double>(), 45);
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("pressure angle"), std::string::npos);
+}
+
+TEST(CamCommand, Otm2015Problem2TableInTheCsv) {
+  // Seed 000_bc94d104a9983772.txt, problem 2 b: psi = 1.65, 11.20, 28.65, 46.09, 55.64 deg at
+  // theta = 130 ... 170 deg (every 10 deg), and the same values descending from 260 deg by 20 deg.
+  const fs::path csv = scratch_dir() / "otm.csv";
+  const auto r = run(gearkit() + quoted(example("otm2015_p2_oscillating_cycloidal.yaml")) + " --csv " + quoted(csv));
+  ASSERT_EQ(r.status, 0) << r.errors;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("theta_deg,psi_deg,", 0), 0u) << line;
+  std::map<int, double> psi;
+  while (std::getline(in, line)) {
+    const double theta = std::stod(line.substr(0, line.find(',')));
+    const auto second = line.find(',') + 1;
+    psi[static_cast<int>(std::lround(theta))] = std::stod(line.substr(second, line.find(',', second) - second));
+  }
+  const std::map<int, double> expected{{120, 0},     {130, 1.65},  {140, 11.20}, {150, 28.65}, {160, 46.09},
+                                       {170, 55.64}, {180, 57.30}, {240, 57.30}, {260, 55.64}, {280, 46.09},
+                                       {300, 28.65}, {320, 11.20}, {340, 1.65}};
+  for (auto [theta, value] : expected) EXPECT_NEAR(psi.at(theta), value, 0.005) << theta;
+}
+
+TEST(CamCommand, EveryExampleExportsADxfThatEzdxfAcceptsWithTheComputedProfile) {
+  for (const auto& entry : fs::directory_iterator(fs::path(GEARKIT_SOURCE_DIR) / "examples" / "cams")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    for (bool lines_arcs : {false, true}) {
+      const std::string stem = entry.path().stem().string() + (lines_arcs ? "_la" : "");
+      const fs::path dxf = scratch_dir() / (stem + ".dxf"), csv = scratch_dir() / (stem + ".csv");
+      const auto r = run(gearkit() + quoted(entry.path()) + " --dxf " + quoted(dxf) + " --csv " + quoted(csv) +
+                         " --cutter-radius 5" + (lines_arcs ? " --dxf-lines-arcs" : "") + " --format json");
+      ASSERT_EQ(r.status, 0) << r.errors;
+      const auto report = nlohmann::json::parse(r.output);
+      // Where the profile is arcs, ezdxf must read back every analytic profile point (CSV, 360
+      // per turn) within the fit tolerance; a cusped flat-face envelope is a polyline through
+      // 3600 points, whose chords leave the in-between CSV points by up to their sag.
+      const double tol = report["fit_tolerance_mm"].get<double>() * 1.01 + 1e-6;
+      const auto check = ezdxf_check(dxf, "--points " + quoted(csv) +
+                                              " --x-column profile_x_mm --y-column profile_y_mm --layer profile"
+                                              " --tol " + std::to_string(report["profile_arcs"].get<int>() >= 3600 ? 0.05 : tol));
+      ASSERT_FALSE(check.contains("read_error")) << check.dump();
+      EXPECT_TRUE(check["audit_errors"].empty()) << check.dump();
+      EXPECT_EQ(check["dxfversion"], "AC1015");
+      EXPECT_EQ(check["insunits"], 4);
+      EXPECT_TRUE(check["ok"].get<bool>()) << check.dump();
+      const auto& layers = check["entities"];
+      EXPECT_TRUE(layers.contains("profile"));
+      EXPECT_TRUE(layers.contains("base_circle"));
+      if (lines_arcs) {
+        for (const auto& [layer, counts] : layers.items()) EXPECT_FALSE(counts.contains("LWPOLYLINE")) << layer;
+      } else {
+        EXPECT_EQ(check["closed_polylines"]["profile"], 1);
+        if (!report["undercut"].get<bool>()) {
+          EXPECT_EQ(check["closed_polylines"]["tool_path"], 1);
+        }
+      }
+    }
+  }
+}
+
+TEST(CamCommand, SvgDrawingAndPlotAreWritten) {
+  const fs::path svg = scratch_dir() / "cam.svg", plot = scratch_dir() / "plot.svg";
+  fs::remove(svg);
+  fs::remove(plot);
+  const auto r = run(gearkit() + quoted(example("translating_roller_cycloidal.yaml")) + " --svg " + quoted(svg) +
+                     " --plot " + quoted(plot) + " --follower-at 90");
+  ASSERT_EQ(r.status, 0) << r.errors;
+  std::ifstream a(svg), b(plot);
+  const std::string drawing((std::istreambuf_iterator<char>(a)), {}), chart((std::istreambuf_iterator<char>(b)), {});
+  for (const char* layer : {"layer-profile", "layer-pitch_curve", "layer-base_circle", "layer-follower"})
+    EXPECT_NE(drawing.find(layer), std::string::npos) << layer;
+  EXPECT_NE(chart.find("<svg"), std::string::npos);
+  EXPECT_NE(chart.find("acceleration"), std::string::npos);
+}
+
+/// The error line of a run: the last line on stderr (the plugin host may warn before it about
+/// unrelated plugins).
+std::string last_line(const std::string& text) {
+  std::string t = text;
+  while (!t.empty() && t.back() == '\n') t.pop_back();
+  const auto nl = t.rfind('\n');
+  return nl == std::string::npos ? t : t.substr(nl + 1);
+}
+
+void expect_input_error(const std::string& args, const std::string& fragment) {
+  const auto r = run(gearkit() + args);
+  EXPECT_EQ(r.status, 2) << r.errors;
+  EXPECT_NE(last_line(r.errors).find(fragment), std::string::npos) << r.errors;
+  EXPECT_EQ(r.errors.find("terminate"), std::string::npos) << r.errors;
+  EXPECT_TRUE(r.output.empty()) << r.output;
+}
+
+const std::string kHead = R"(cam: {base_radius: 40 mm}
+follower: {type: translating, contact: roller, roller_radius: 10 mm}
+)";
+
+TEST(CamCommand, BadInputIsOneLineAndExitTwo) {
+  const auto gap = write_model("gap.yaml", kHead + R"(motion:
+  - {type: rise, from: 0 deg, to: 100 deg, lift: 10 mm}
+  - {type: return, from: 110 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(gap), "gap.yaml:5:5: segment starts at 110 deg but the previous one ends at 100 deg (a gap)");
+  const auto overlap = write_model("overlap.yaml", kHead + R"(motion:
+  - {type: rise, from: 0 deg, to: 100 deg, lift: 10 mm}
+  - {type: return, from: 90 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(overlap), "an overlap");
+  const auto short_turn = write_model("short.yaml", kHead + R"(motion:
+  - {type: rise, from: 0 deg, to: 100 deg, lift: 10 mm}
+  - {type: return, from: 100 deg, to: 300 deg}
+)");
+  expect_input_error(quoted(short_turn), "must cover 360 deg, they cover 300 deg");
+  const auto zero = write_model("zero.yaml", kHead + R"(motion:
+  - {type: dwell, from: 0 deg, to: 100 deg}
+  - {type: rise, from: 100 deg, to: 100 deg, lift: 10 mm}
+  - {type: return, from: 100 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(zero), "zero.yaml:5:5: expected a segment of positive duration");
+  const auto negative = write_model("negative.yaml", R"(cam: {base_radius: 40 mm}
+follower: {type: translating, contact: roller, roller_radius: -10 mm}
+motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 10 mm}
+  - {type: return, from: 180 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(negative), "negative.yaml:2:");
+  const auto small_base = write_model("small_base.yaml", R"(cam: {base_radius: 8 mm}
+follower: {type: translating, contact: roller, roller_radius: 10 mm}
+motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 10 mm}
+  - {type: return, from: 180 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(small_base), "small_base.yaml:1:20: 'base_radius': expected a base circle radius >= the roller radius");
+  const auto reach = write_model("reach.yaml", R"(cam: {base_radius: 40 mm}
+follower: {type: oscillating, contact: roller, roller_radius: 10 mm, pivot_distance: 300 mm, arm_length: 100 mm}
+motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 20 deg}
+  - {type: return, from: 180 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(reach), "the follower cannot reach the cam");
+  const auto unknown = write_model("unknown.yaml", kHead + R"(motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 10 mm, law: cycloid}
+  - {type: return, from: 180 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(unknown), "unknown.yaml:4:");
+  const auto negative_lift = write_model("negative_lift.yaml", kHead + R"(motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 10 mm}
+  - {type: return, from: 180 deg, to: 360 deg, lift: -10 mm}
+)");
+  expect_input_error(quoted(negative_lift), "negative_lift.yaml:5:5: expected a lift > 0, found -10");
+  expect_input_error(quoted(example("translating_roller_cycloidal.yaml")) + " --cutter-radius -3", "option '--cutter-radius'");
+  expect_input_error(quoted(example("translating_roller_cycloidal.yaml")) + " --cutter-radius 3kg", "option '--cutter-radius'");
+  expect_input_error(quoted(scratch_dir() / "missing.yaml"), "missing.yaml");
+}
+
+TEST(CamCommand, FailedExportLeavesNoFile) {
+  const fs::path target = scratch_dir() / "no-such-dir" / "cam.dxf";
+  const auto r = run(gearkit() + quoted(example("translating_roller_cycloidal.yaml")) + " --dxf " + quoted(target));
+  EXPECT_EQ(r.status, 2) << r.errors;
+  EXPECT_NE(last_line(r.errors).find("--dxf"), std::string::npos) << r.errors;
+  EXPECT_FALSE(fs::exists(target));
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CamCommand, MotionPeaksPerSecondMatchTheCycloidalFormulas) {
+  // Cycloidal rise L = 20 mm over beta = 120 deg at 300 rpm (omega = 10 pi rad/s):
+  // v_max = 2 L / beta * omega = 600 mm/s, a_max = 2 pi L / beta^2 * omega^2,
+  // j_max = 4 pi^2 L / beta^3 * omega^3 (Norton table 8-3 factors 2, 2 pi, 4 pi^2).
+  const auto j = run_json(gearkit::cam::testing::quoted(example("translating_roller_cycloidal.yaml")));
+  const double pi = std::numbers::pi, L = 20, beta = 2 * pi / 3, w = 10 * pi;
+  EXPECT_NEAR(j["v_max_mm_s"].get<double>(), 2 * L / beta * w, 1e-6);
+  EXPECT_NEAR(j["a_max_mm_s2"].get<double>(), 2 * pi * L / (beta * beta) * w * w, 1e-3);
+  EXPECT_NEAR(j["j_max_mm_s3"].get<double>(), 4 * pi * pi * L / (beta * beta * beta) * w * w * w, 1e-1);
+  EXPECT_NEAR(j["velocity_max_per_rad"].get<double>(), 2 * L / beta, 1e-9);
+}
+
+TEST(CamCommand, StrictTurnsWarningsIntoExitThree) {
+  const auto r = run(gearkit() + gearkit::cam::testing::quoted(example("otm2015_p2_oscillating_cycloidal.yaml")) +
+                     " --strict");
+  EXPECT_EQ(r.status, 3) << r.errors;
+}
+
+}  // namespace

@@ -1,0 +1,121 @@
+// Tests for gearkit/io/quantity.hpp. Reference factors: SI brochure (BIPM, 9th ed.) definitions:
+// 1 in = 25.4 mm exactly, 1 rev = 2 pi rad, 1 min = 60 s, 1 hp (mechanical) = 745.699872 W.
+#include <gearkit/io/quantity.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+using gearkit::io::parse_quantity_si;
+using gearkit::io::Quantity;
+using gearkit::io::QuantityError;
+
+namespace {
+constexpr double pi = std::numbers::pi;
+}
+
+TEST(Quantity, ParsesEveryUnitOfTheIssue) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("9 mm", Quantity::length, "mm"), 0.009);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("0.2 m", Quantity::length, "mm"), 0.2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("20 deg", Quantity::angle, "deg"), 20 * pi / 180);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1.2 rad", Quantity::angle, "deg"), 1.2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2950 rpm", Quantity::angular_velocity, "rpm"), 2950 * 2 * pi / 60);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("100 kW", Quantity::power, "W"), 100e3);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("36.6 N*m", Quantity::torque, "N*m"), 36.6);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("0.1 kg*m^2", Quantity::moment_of_inertia, "kg*m^2"), 0.1);
+}
+
+TEST(Quantity, BareNumberTakesTheFieldsDefaultUnit) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("9", Quantity::length, "mm"), 0.009);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("20", Quantity::angle, "deg"), 20 * pi / 180);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1500", Quantity::angular_velocity, "rpm"), 50 * pi);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2.5", Quantity::dimensionless, ""), 2.5);
+}
+
+TEST(Quantity, NumberForms) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("9mm", Quantity::length, ""), 0.009);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("  .5 m ", Quantity::length, ""), 0.5);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("-1.5e-3 m", Quantity::length, ""), -1.5e-3);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("+2E2 mm", Quantity::length, ""), 0.2);
+}
+
+TEST(Quantity, DerivedAndOtherUnits) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1 in", Quantity::length, ""), 0.0254);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("90 °", Quantity::angle, ""), pi / 2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("0.25 rev", Quantity::angle, ""), pi / 2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("10 rad/s", Quantity::angular_velocity, ""), 10);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("10 1/s", Quantity::angular_velocity, ""), 10);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2 m/s^2", Quantity::acceleration, ""), 2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("3 kN*m", Quantity::torque, ""), 3000);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1 hp", Quantity::power, ""), 745.69987158227022);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("5 N/mm", Quantity::stiffness, ""), 5000);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("200 GPa", Quantity::pressure, ""), 200e9);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2 kWh", Quantity::energy, ""), 7.2e6);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("500 g", Quantity::mass, ""), 0.5);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1 kg*mm^2", Quantity::moment_of_inertia, ""), 1e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2 min", Quantity::time, ""), 120);
+}
+
+TEST(Quantity, TypedBoostUnitsFrontEnds) {
+  EXPECT_DOUBLE_EQ(gearkit::io::parse_length("9").value(), 0.009);
+  EXPECT_DOUBLE_EQ(gearkit::io::parse_angle("180").value(), pi);
+  EXPECT_DOUBLE_EQ(gearkit::io::parse_angular_velocity("60").value(), 2 * pi);
+  EXPECT_DOUBLE_EQ(gearkit::io::parse_power("100 kW").value(), 1e5);
+  EXPECT_DOUBLE_EQ(gearkit::io::parse_torque("36.6").value(), 36.6);
+  EXPECT_DOUBLE_EQ(gearkit::io::parse_moment_of_inertia("0.1").value(), 0.1);
+}
+
+// Each malformed input must be refused with a message that says what was wrong.
+struct Malformed {
+  const char* text;
+  Quantity expected;
+  const char* message_part;
+};
+
+class QuantityMalformed : public ::testing::TestWithParam<Malformed> {};
+
+TEST_P(QuantityMalformed, IsRefusedWithAClearMessage) {
+  const Malformed& m = GetParam();
+  try {
+    parse_quantity_si(m.text, m.expected, "mm");
+    FAIL() << "accepted '" << m.text << "'";
+  } catch (const QuantityError& e) {
+    EXPECT_NE(std::string(e.what()).find(m.message_part), std::string::npos)
+        << "message for '" << m.text << "' was: " << e.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    All, QuantityMalformed,
+    ::testing::Values(Malformed{"", Quantity::length, "empty"},
+                      Malformed{"   ", Quantity::length, "empty"},
+                      Malformed{"mm", Quantity::length, "expected a length"},
+                      Malformed{"9 mmm", Quantity::length, "unknown unit 'mmm'"},
+                      Malformed{"9 MM", Quantity::length, "unknown unit 'MM'"},
+                      Malformed{"20 deg", Quantity::length, "expected a length"},
+                      Malformed{"9 mm", Quantity::angle, "expected an angle"},
+                      Malformed{"5 m/s", Quantity::length, "expected a length"},
+                      Malformed{"9,5 mm", Quantity::length, "comma"},
+                      Malformed{"9 m^", Quantity::length, "exponent"},
+                      Malformed{"9 m^x", Quantity::length, "exponent"},
+                      Malformed{"9 m^9", Quantity::length, "exponent"},
+                      Malformed{"9 m/", Quantity::length, "expected a unit"},
+                      Malformed{"9 * m", Quantity::length, "expected a unit symbol"},
+                      Malformed{"9 mm mm", Quantity::length, "between units"},
+                      Malformed{"nan", Quantity::length, "expected a length"},
+                      Malformed{"inf mm", Quantity::length, "expected a length"},
+                      Malformed{"1e999 mm", Quantity::length, "finite"},
+                      Malformed{"0x10 mm", Quantity::length, "decimal"},
+                      Malformed{"--9 mm", Quantity::length, "expected a length"},
+                      Malformed{"2950 rpm", Quantity::power, "expected a power"},
+                      Malformed{"100 kW", Quantity::torque, "expected a torque"},
+                      Malformed{"0.1 kg*m", Quantity::moment_of_inertia, "expected a moment of inertia"},
+                      Malformed{"20 deg", Quantity::dimensionless, "expected a plain number"},
+                      Malformed{"12 teeth", Quantity::dimensionless, "unknown unit"}));
+
+TEST(Quantity, DefaultUnitIsCheckedToo) {
+  // A programming error in a field's declared default must not pass silently.
+  EXPECT_THROW(parse_quantity_si("9", Quantity::length, "deg"), QuantityError);
+}

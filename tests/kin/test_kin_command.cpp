@@ -1,0 +1,232 @@
+// `gearkit kin` end to end through the executable (GEARKIT_EXE): the examples, the plugin
+// elements (gear mesh, epicyclic train, cam follower), plots and animations, bad input.
+#include <run_gearkit.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+using gearkit::testing::run_gearkit;
+using gearkit::testing::scratch_dir;
+using gearkit::testing::shell_quote;
+using gearkit::testing::slurp;
+
+const std::string kExamples = std::string(GEARKIT_SOURCE_DIR) + "/examples/mechanisms/";
+
+nlohmann::json run_json(const std::string& args) {
+  const auto r = run_gearkit("kin " + args + " --format json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+std::string write(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+  const auto p = dir / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+void expect_bad_input(const gearkit::testing::RunResult& r, const std::string& part) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+}
+
+// Seed 004 pantograph: s_max = 346.4 mm at phi1 = -60 deg, phi2'/phi1' = 0.6 (phi2 clockwise).
+TEST(KinCommand, PantographLimitPosition) {
+  const auto j = run_json(shell_quote(kExamples + "pantograph.yaml"));
+  EXPECT_EQ(j["dof"], 1);
+  EXPECT_EQ(j["gruebler"], 1);
+  EXPECT_EQ(j["redundant"], 0);
+  bool found = false;
+  for (const auto& e : j["limit_positions"])
+    if (e["output"] == "s") {
+      found = true;
+      EXPECT_EQ(e["kind"], "max");
+      EXPECT_NEAR(e["input_deg"].get<double>(), -60.0, 1e-5);
+      EXPECT_NEAR(e["value_mm"].get<double>(), 346.4, 0.05);
+      const double ratio = -e["angular_velocity_ratios"]["coupler.omega_ratio"].get<double>();
+      EXPECT_NEAR(ratio, 0.6, 1e-5);
+    }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(j["positions"].size(), 41u);
+  EXPECT_TRUE(j["warnings"].empty());
+}
+
+// Seed 004 lifting platform: T_m = 113.4 N m and F_PQ = 445.1 N in tension at phi3 = 69.5 deg.
+TEST(KinCommand, LiftingPlatformTorqueAndRodForce) {
+  const auto j = run_json(shell_quote(kExamples + "lifting_platform.yaml") + " --at 69.5");
+  ASSERT_EQ(j["positions"].size(), 1u);
+  const auto& p = j["positions"][0];
+  EXPECT_NEAR(p["driving_torque_Nm"].get<double>(), 113.4, 0.05);
+  EXPECT_NEAR(p["driving_torque_lagrange_Nm"].get<double>(), 113.4, 0.05);
+  EXPECT_NEAR(p["q"]["arm1.angle_deg"].get<double>(), 30.0, 1e-4);
+  bool rod = false;
+  for (const auto& m : p["two_force_members"])
+    if (m["link"] == "rod") {
+      rod = true;
+      EXPECT_EQ(m["state"], "tension");
+      EXPECT_NEAR(m["axial_force_N"].get<double>(), 445.1, 0.1);
+    }
+  EXPECT_TRUE(rod);
+}
+
+// Seed 004 spring compressor: half of T = 20 N m for F_m = 441.8 N; F_PQ = 1112 N tension.
+TEST(KinCommand, SpringCompressor) {
+  const auto j = run_json(shell_quote(kExamples + "spring_compressor.yaml"));
+  const auto& p = j["positions"][0];
+  EXPECT_NEAR(p["driving_torque_Nm"].get<double>(), -10.0, 0.01);
+  EXPECT_NEAR(p["two_force_members"][0]["axial_force_N"].get<double>(), 1112.0, 1.0);
+  EXPECT_EQ(p["two_force_members"][0]["state"], "tension");
+}
+
+// Gear plugin: external mesh z1 = 20, z2 = 40 makes the second crank turn at -z1/z2 = -1/2.
+TEST(KinCommand, GearedFiveBarThroughThePlugin) {
+  const auto j = run_json(shell_quote(kExamples + "geared_five_bar.yaml") + " --at 120");
+  EXPECT_EQ(j["dof"], 1);
+  EXPECT_EQ(j["gruebler"], 1);
+  const auto& p = j["positions"][0];
+  EXPECT_NEAR(p["outputs"]["gear2 angle_ratio"].get<double>(), -0.5, 1e-9);
+  EXPECT_NEAR(p["qd"]["gear2.omega_rad_s"].get<double>(), -5.0, 1e-9);  // driver 10 rad/s
+  // The drawing has both cranks at 90 deg; 30 deg more on gear 1 is 15 deg less on gear 2.
+  EXPECT_NEAR(p["q"]["gear2.angle_deg"].get<double>(), 75.0, 1e-9);
+}
+
+// Cam plugin: cycloidal rise of 20 deg over 120 deg of cam turn (cam clockwise). At 60 deg of
+// cam rotation u = 1/2, y = u - sin(2 pi u)/(2 pi) = 1/2, so the rocker is at 100 + 10 deg, and
+// d(psi)/d(theta) = L (1 - cos 2 pi u) / beta = 20 * 2 / 120 = 1/3 (Norton eq. 8.12).
+TEST(KinCommand, CamRockerThroughThePlugin) {
+  const auto j = run_json(shell_quote(kExamples + "cam_rocker.yaml") + " --at -60");
+  EXPECT_EQ(j["dof"], 1);
+  const auto& p = j["positions"][0];
+  EXPECT_NEAR(p["outputs"]["rocker angle_deg"].get<double>(), 110.0, 1e-8);
+  EXPECT_NEAR(p["outputs"]["rocker angle_ratio"].get<double>(), -1.0 / 3.0, 1e-9);
+  // A full turn: the follower rises 20 deg and comes back.
+  const auto sweep = run_json(shell_quote(kExamples + "cam_rocker.yaml"));
+  double lo = 1e9, hi = -1e9;
+  for (const auto& q : sweep["positions"]) {
+    lo = std::min(lo, q["outputs"]["rocker angle_deg"].get<double>());
+    hi = std::max(hi, q["outputs"]["rocker angle_deg"].get<double>());
+  }
+  EXPECT_NEAR(lo, 100.0, 1e-9);
+  EXPECT_NEAR(hi, 120.0, 1e-9);
+}
+
+// Train plugin: seed 004 (exam 2020-21, exercise 2) Willis equation for planet 3, satellite 4,
+// ring 5 and arm b, tau2 = -z3 z4/(z4 z5) = -1/3. With the ring fixed (omega5 = 0):
+// tau2 omega3 + (1 - tau2) omega_b = 0 -> omega_b/omega3 = -tau2/(1 - tau2) = 1/4.
+TEST(KinCommand, EpicyclicTrainThroughThePlugin) {
+  const auto dir = scratch_dir("kin-train");
+  const std::string file = write(dir, "planetary.yaml", R"(
+mechanism: planetary, ring fixed
+ground: {O: [0, 0]}
+links:
+  sun: {points: {O: [0, 0]}}
+  arm: {points: {O: [0, 0], planet: [40, 0]}}
+joints:
+  - {type: revolute, at: [sun.O, ground.O]}
+  - {type: revolute, at: [arm.O, ground.O]}
+elements:
+  - {type: epicyclic_train, input: sun, output: ground, arm: arm, driving: [30, 45], driven: [45, 90], externals: 1}
+drivers:
+  - {name: sun angle, type: angle, link: sun, speed: 4 rad/s}
+outputs:
+  - {name: arm angle, type: angle, link: arm}
+)");
+  const auto j = run_json(shell_quote(file) + " --at 40");
+  const auto& p = j["positions"][0];
+  EXPECT_NEAR(p["outputs"]["arm angle_ratio"].get<double>(), 0.25, 1e-12);
+  EXPECT_NEAR(p["qd"]["arm.omega_rad_s"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(p["q"]["arm.angle_deg"].get<double>(), 10.0, 1e-9);
+}
+
+TEST(KinCommand, PlotAndAnimationAreSvg) {
+  const auto dir = scratch_dir("kin-svg");
+  const std::string plot = (dir / "plot.svg").string(), anim = (dir / "anim.svg").string();
+  const auto r = run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --sweep 0:360:10 --plot " +
+                             shell_quote(plot) + " --animate " + shell_quote(anim));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string p = slurp(plot), a = slurp(anim);
+  EXPECT_NE(p.find("<svg"), std::string::npos);
+  EXPECT_NE(a.find("<svg"), std::string::npos);
+  EXPECT_NE(a.find("<animate attributeName=\"points\""), std::string::npos);
+  EXPECT_NE(a.find("repeatCount=\"indefinite\""), std::string::npos);
+}
+
+TEST(KinCommand, DeadPointInASweepIsAWarning) {
+  const auto dir = scratch_dir("kin-dead");
+  std::string text = slurp(kExamples + "pantograph.yaml");
+  // Drive the slider instead of the crank: s cannot pass s_max = 346.4 mm.
+  const auto at = text.find("drivers:");
+  text = text.substr(0, at) +
+         "drivers:\n  - {name: s, type: displacement, joint: guide, range: [330 mm, 360 mm, 2 mm]}\n"
+         "outputs:\n  - {name: phi1, type: angle, link: crank}\n";
+  const std::string file = write(dir, "pantograph_slider.yaml", text);
+  const auto r = run_gearkit("kin " + shell_quote(file) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["dead_points"].size(), 1u);
+  EXPECT_NEAR(j["dead_points"][0]["input_mm"].get<double>(), 346.41, 0.01);
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("dead point"), std::string::npos);
+  EXPECT_EQ(run_gearkit("kin " + shell_quote(file) + " --strict").status, 3);
+}
+
+TEST(KinCommand, CannotAssembleIsAWarning) {
+  const auto r = run_gearkit("kin " + shell_quote(kExamples + "pantograph.yaml") + " --driver phi1 --at 60 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["positions"].empty());
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("cannot"), std::string::npos);
+}
+
+TEST(KinCommand, BadInput) {
+  const auto dir = scratch_dir("kin-bad");
+  const std::string base = slurp(kExamples + "four_bar.yaml");
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string t = base;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "a.yaml", replaced("at: [coupler.B, rocker.B]", "at: [coupler.B, rockr.B]")))),
+                   "a.yaml:31:");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "b.yaml", replaced("at: [coupler.B, rocker.B]", "at: [coupler.X, rocker.B]")))),
+                   "link 'coupler' has no point 'X'");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "c.yaml", replaced("  - {name: O4, type: revolute, at: [rocker.O4, ground.O4]}\n", "")))),
+                   "under-driven");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "d.yaml", replaced("drivers:\n", "drivers:\n  - {name: extra, type: angle, link: rocker}\n")))),
+                   "over-constrained");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "e.yaml", replaced("mass: 0.1 kg", "mass: 0.1 mm")))), "e.yaml:");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "f.yaml", replaced("joints:", "elements:\n  - {type: warp_drive}\njoints:")))),
+                   "unknown element type 'warp_drive'");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "g.yaml", replaced("angle: 40 deg", "angel: 40 deg")))), "unknown key 'angel'");
+  expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --sweep 0:360"), "option '--sweep'");
+  expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --sweep 0:360:0"), "option '--sweep'");
+  expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --at 3 mm"), "");
+  expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --at 10 --sweep 0:1:1"), "--at");
+  expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --outputs nope"), "option '--outputs'");
+  expect_bad_input(run_gearkit("kin " + shell_quote((dir / "missing.yaml").string())), "missing.yaml");
+  expect_bad_input(run_gearkit("kin"), "expected a mechanism file");
+  // A failed --plot leaves no file and says which option.
+  expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --plot /nonexistent/dir/p.svg"), "--plot");
+}
+
+TEST(KinCommand, EveryExampleRuns) {
+  for (const auto& entry : std::filesystem::directory_iterator(kExamples)) {
+    if (entry.path().extension() != ".yaml") continue;
+    const auto r = run_gearkit("kin " + shell_quote(entry.path().string()) + " --format json");
+    EXPECT_EQ(r.status, 0) << entry.path() << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["dof"].get<int>(), 1) << entry.path();
+    EXPECT_FALSE(j["positions"].empty()) << entry.path();
+    EXPECT_TRUE(j["warnings"].empty()) << entry.path() << j["warnings"].dump();
+  }
+}
+
+}  // namespace

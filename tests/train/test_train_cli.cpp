@@ -1,0 +1,273 @@
+// The `gearkit train` command end to end: runs GEARKIT_EXE, checks JSON, messages and exit codes.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+fs::path scratch() {
+  // One folder per process: ctest runs several test processes at once.
+  const fs::path dir = fs::path(GEARKIT_BINARY_DIR) / "test-scratch" / ("train-cli-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+CliRun gearkit(const std::string& args) {
+  const fs::path err = scratch() / "stderr.txt";
+  const std::string command = std::string("'") + GEARKIT_EXE + "' " + args + " 2>'" + err.string() + "'";
+  CliRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(err);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  run.err = ss.str();
+  return run;
+}
+
+std::string example(const std::string& name) {
+  return std::string("'") + GEARKIT_SOURCE_DIR + "/examples/trains/" + name + "'";
+}
+
+std::string write_yaml(const std::string& name, const std::string& text) {
+  const fs::path p = scratch() / name;
+  std::ofstream(p) << text;
+  return "'" + p.string() + "'";
+}
+
+nlohmann::json json_of(const CliRun& run) {
+  try {
+    return nlohmann::json::parse(run.out);
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not JSON: " << e.what() << "\n" << run.out << run.err;
+    return {};
+  }
+}
+
+// Seed 004 (CVT train): w_b/w_1 = 47/72 with w5 = w1, input 1000 rpm -> arm at 652.78 rpm.
+TEST(TrainCli, SeedCvtTrainJson) {
+  const CliRun run = gearkit("train " + example("seed_cvt_train.yaml") + " --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  EXPECT_EQ(j["dof"], 2);
+  EXPECT_EQ(j["ratio"]["exact"], "47/72");
+  EXPECT_NEAR(j["ratio"]["value"].get<double>(), 47.0 / 72.0, 1e-15);
+  EXPECT_NEAR(j["speeds_rpm"]["b"].get<double>(), 1000.0 * 47.0 / 72.0, 1e-9);
+  EXPECT_NEAR(j["speeds_rpm"]["23"].get<double>(), -1000.0 * 35.0 / 90.0, 1e-9);
+  EXPECT_EQ(j["equations"].size(), 3u);
+  EXPECT_TRUE(j["warnings"].empty());
+}
+
+TEST(TrainCli, SeedCvtTrainTextShowsFractionAndDecimal) {
+  const CliRun run = gearkit("train " + example("seed_cvt_train.yaml"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("47/72 = 0.652778"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("w_23 / w_1 = -35/90"), std::string::npos) << run.out;
+}
+
+// Seed 004 second exam: modes 7/5, 9/7 and 1.
+TEST(TrainCli, SeedModes) {
+  const CliRun run = gearkit("train " + example("seed_two_epicyclic_stages.yaml") +
+                          " --input 1 --output-member 7 --modes --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  ASSERT_EQ(j["modes"].size(), 3u);
+  EXPECT_EQ(j["modes"][0]["exact"], "7/5");
+  EXPECT_EQ(j["modes"][1]["exact"], "9/7");
+  EXPECT_EQ(j["modes"][2]["exact"], "1");
+  EXPECT_EQ(j["modes"][2]["condition"], "w_b = w_45");
+}
+
+// OTM 2015 problem 3 by synthesis: z1 = 15 -> z2 = 60, z3 = 18, z4 = 72.
+TEST(TrainCli, SynthesisOtmReducer) {
+  const CliRun run = gearkit("train synth reducer --m1 6 --m2 5 --ratio 1/16 --z1 15 --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  ASSERT_FALSE(j["candidates"].empty());
+  EXPECT_EQ(j["candidates"][0]["z2"], 60);
+  EXPECT_EQ(j["candidates"][0]["z3"], 18);
+  EXPECT_EQ(j["candidates"][0]["z4"], 72);
+  EXPECT_EQ(j["candidates"][0]["ratio_exact"], "1/16");
+}
+
+// Torques on the simple planetary example, 10 N*m on the sun, ring held (hand derivation in
+// test_torques.cpp): carrier -35 N*m, ring reaction 25 N*m; efficiency (24 + eta0 60)/84.
+TEST(TrainCli, TorquesAndEfficiency) {
+  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --torque sun=10 --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  EXPECT_NEAR(j["torques"]["ideal_Nm"]["carrier"].get<double>(), -35.0, 1e-12);
+  EXPECT_NEAR(j["torques"]["ideal_Nm"]["ring"].get<double>(), 25.0, 1e-12);
+  EXPECT_NEAR(j["torques"]["efficiency"].get<double>(), (24 + 0.98 * 0.99 * 60) / 84.0, 1e-12);
+  EXPECT_FALSE(j["torques"]["power_circulation"].get<bool>());
+}
+
+// LECAD test run (lecad.uni-lj.si/~leon/FS/PlanetryTransmissions/node8.html): ratio 6.14286 and
+// centre distance a = 56.8 mm with shifts x = 0.4380 (sun), 0.0426 (planet), 0 (ring), m = 1.75 mm.
+// The working centre distances come from libgear; both meshes must agree (coaxial) at 56.8 mm.
+TEST(TrainCli, LjubljanaPlanetaryWithProfileShift) {
+  const CliRun run = gearkit("train " + example("ljubljana_planetary.yaml") + " --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  EXPECT_NEAR(1.0 / j["ratio"]["value"].get<double>(), 6.14286, 5e-6);
+  bool coaxial = false;
+  for (const auto& check : j["assembly"])
+    if (check["condition"] == "coaxiality") {
+      coaxial = check["checked"].get<bool>() && check["satisfied"].get<bool>();
+      EXPECT_NE(check["detail"].get<std::string>().find("= 56.80"), std::string::npos) << check["detail"];
+    }
+  EXPECT_TRUE(coaxial);
+  EXPECT_TRUE(j["warnings"].empty()) << j["warnings"];
+}
+
+TEST(TrainCli, UnderDeterminedIsAWarning) {
+  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100 --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("'carrier'"), std::string::npos);
+  const CliRun strict = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100 --strict");
+  EXPECT_EQ(strict.status, 3);
+}
+
+TEST(TrainCli, OverDeterminedNamesTheOption) {
+  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --fix ring --fix carrier --input sun=100");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("option '--input'"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("over-determines"), std::string::npos) << run.err;
+}
+
+TEST(TrainCli, BadOptions) {
+  const CliRun unknown = gearkit("train " + example("simple_planetary.yaml") + " --fix rign");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("option '--fix'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("'rign'"), std::string::npos) << unknown.err;
+  const CliRun speed = gearkit("train " + example("simple_planetary.yaml") + " --input sun=fast");
+  EXPECT_EQ(speed.status, 2);
+  EXPECT_NE(speed.err.find("option '--input'"), std::string::npos) << speed.err;
+  const CliRun ratio = gearkit("train synth reducer --m1 6 --m2 5 --ratio 1/0");
+  EXPECT_EQ(ratio.status, 2);
+  EXPECT_NE(ratio.err.find("option '--ratio'"), std::string::npos) << ratio.err;
+  const CliRun missing = gearkit("train /nonexistent/train.yaml");
+  EXPECT_EQ(missing.status, 2);
+  const CliRun no_file = gearkit("train");
+  EXPECT_EQ(no_file.status, 2);
+  EXPECT_NE(no_file.err.find("expected a train file"), std::string::npos) << no_file.err;
+  const CliRun modes = gearkit("train " + example("simple_planetary.yaml") + " --modes --input sun --input ring");
+  EXPECT_EQ(modes.status, 2);
+  EXPECT_NE(modes.err.find("option '--modes'"), std::string::npos) << modes.err;
+}
+
+// Bad models: each error names file:line:column and the culprit, exit status 2.
+struct BadModel {
+  const char* name;
+  const char* yaml;
+  const char* expected_place;  // "file.yaml:L:"
+  const char* expected_words;
+};
+
+class TrainCliBadModel : public ::testing::TestWithParam<BadModel> {};
+
+TEST_P(TrainCliBadModel, ReportsFileLineAndCulprit) {
+  const BadModel& bad = GetParam();
+  const CliRun run = gearkit("train " + write_yaml(bad.name, bad.yaml));
+  EXPECT_EQ(run.status, 2) << run.out;
+  EXPECT_NE(run.err.find(bad.expected_place), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(bad.expected_words), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+}
+
+constexpr const char* planetary_head =
+    "members: [sun, carrier, {name: planet, carried_by: carrier}, ring]\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, TrainCliBadModel,
+    ::testing::Values(
+        BadModel{"same_member.yaml",
+                 "members: [a]\ngears:\n  - {name: g1, member: a, z: 20}\n  - {name: g2, member: a, z: 30}\n"
+                 "meshes:\n  - {gears: [g1, g2]}\n",
+                 "same_member.yaml:6:", "both on member 'a'"},
+        BadModel{"unknown_member.yaml",
+                 "members: [a]\ngears:\n  - {name: g1, member: a, z: 20}\n  - {name: g2, member: b, z: 30}\n"
+                 "meshes: []\n",
+                 "unknown_member.yaml:4:", "unknown member 'b'"},
+        BadModel{"zero_teeth.yaml", "members: [a]\ngears:\n  - {name: g1, member: a, z: 0}\nmeshes: []\n",
+                 "zero_teeth.yaml:3:", "z > 0"},
+        BadModel{"unknown_carrier.yaml",
+                 "members: [sun, {name: planet, carried_by: arm}]\ngears: []\nmeshes: []\n",
+                 "unknown_carrier.yaml:1:", "unknown member 'arm'"},
+        BadModel{"unknown_mesh_carrier.yaml",
+                 "members: [sun, planet]\ngears:\n  - {name: s, member: sun, z: 20}\n"
+                 "  - {name: p, member: planet, z: 20}\nmeshes:\n  - {gears: [s, p], carrier: arm}\n",
+                 "unknown_mesh_carrier.yaml:6:", "carrier 'arm' is not a member"},
+        BadModel{"internal_internal.yaml",
+                 "members: [sun, carrier, {name: planet, carried_by: carrier}, ring]\ngears:\n"
+                 "  - {name: p, member: planet, z: 20, type: internal}\n"
+                 "  - {name: r, member: ring, z: 60, type: internal}\nmeshes:\n  - {gears: [p, r], carrier: carrier}\n",
+                 "internal_internal.yaml:6:", "both internal"},
+        BadModel{"typo_key.yaml", "members: [a]\ngears:\n  - {name: g1, member: a, z: 20, modul: 2}\nmeshes: []\n",
+                 "typo_key.yaml:3:", "unknown key 'modul'"},
+        BadModel{"wrong_type.yaml", "members: [a]\ngears:\n  - {name: g1, member: a, z: twelve}\nmeshes: []\n",
+                 "wrong_type.yaml:3:", "whole number"},
+        BadModel{"bad_type_choice.yaml",
+                 "members: [a]\ngears:\n  - {name: g1, member: a, z: 20, type: inner}\nmeshes: []\n",
+                 "bad_type_choice.yaml:3:", "external, internal"}));
+
+TEST(TrainCli, LockedLoopIsAWarningNamingTheMembers) {
+  const CliRun run = gearkit("train " +
+                          write_yaml("locked.yaml",
+                                     "members: [a, b, c]\ngears:\n  - {name: ga, member: a, z: 20}\n"
+                                     "  - {name: gb, member: b, z: 30}\n  - {name: gc, member: c, z: 40}\n"
+                                     "meshes:\n  - {gears: [ga, gb]}\n  - {gears: [gb, gc]}\n  - {gears: [gc, ga]}\n") +
+                          " --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  EXPECT_EQ(j["dof"], 0);
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("locked"), std::string::npos);
+  EXPECT_EQ(j["locked_members"].size(), 3u);
+}
+
+TEST(TrainCli, AssemblyFailureIsAWarning) {
+  // 25 + 61 = 86 teeth cannot be shared by 3 equally spaced planets.
+  const CliRun run = gearkit("train " +
+                          write_yaml("spacing.yaml", std::string(planetary_head).replace(
+                                                         std::string(planetary_head).find("carrier}"), 8,
+                                                         "carrier, count: 3}") +
+                                                         "gears:\n  - {name: s, member: sun, z: 25}\n"
+                                                         "  - {name: p, member: planet, z: 18}\n"
+                                                         "  - {name: r, member: ring, z: 61, type: internal}\n"
+                                                         "meshes:\n  - {gears: [s, p], carrier: carrier}\n"
+                                                         "  - {gears: [p, r], carrier: carrier}\n") +
+                          " --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  bool found = false;
+  for (const auto& w : j["warnings"]) found = found || w.get<std::string>().find("equal spacing") != std::string::npos;
+  EXPECT_TRUE(found) << j["warnings"];
+}
+
+}  // namespace
