@@ -9,25 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <gearkit/io/xml.hpp>
 
 namespace gearkit::cli {
 
 namespace {
-
-// Names come from the model file: escape them for XML.
-std::string xml(const std::string& text) {
-  std::string r;
-  for (char c : text) {
-    switch (c) {
-      case '&': r += "&amp;"; break;
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += c;
-    }
-  }
-  return r;
-}
 
 Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
   return kin::Model::point_position(q, {body, local});
@@ -70,12 +56,12 @@ std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.3f} {:.3f}\" width=\"800\" height=\"{:.0f}\">\n"
       "<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
-      w, h, 800.0 * h / w, xml(mech.title));
+      w, h, 800.0 * h / w, io::xml_escape(mech.title));
   static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
   for (const auto& [name, p] : m.ground().points) {
     const double s = 3 * stroke;
     svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",
-                       X(p.x()), Y(p.y()), X(p.x()) - s, Y(p.y()) + 1.7 * s, X(p.x()) + s, Y(p.y()) + 1.7 * s, xml(name));
+                       X(p.x()), Y(p.y()), X(p.x()) - s, Y(p.y()) + 1.7 * s, X(p.x()) + s, Y(p.y()) + 1.7 * s, io::xml_escape(name));
   }
   for (std::size_t b = 0; b < m.bodies().size(); ++b) {
     const kin::Body& body = m.bodies()[b];
@@ -93,7 +79,7 @@ std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis
     const bool closed = body.points.size() >= 3;
     svg += fmt::format("<{} points=\"{}\" fill=\"{}\" fill-opacity=\"0.25\" stroke=\"{}\" stroke-width=\"{:.3f}\" "
                        "stroke-linejoin=\"round\" stroke-linecap=\"round\"><title>{}</title>\n",
-                       closed ? "polygon" : "polyline", values.front(), closed ? color : "none", color, stroke, xml(body.name));
+                       closed ? "polygon" : "polyline", values.front(), closed ? color : "none", color, stroke, io::xml_escape(body.name));
     if (values.size() > 1)
       svg += fmt::format("<animate attributeName=\"points\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
                          duration, fmt::join(values, ";"));
@@ -106,7 +92,7 @@ std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis
         cy.push_back(fmt::format("{:.3f}", Y(p.y())));
       }
       svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"white\" stroke=\"black\" stroke-width=\"{:.3f}\"><title>{}.{}</title>\n",
-                         cx.front(), cy.front(), 1.2 * stroke, 0.4 * stroke, xml(body.name), xml(name));
+                         cx.front(), cy.front(), 1.2 * stroke, 0.4 * stroke, io::xml_escape(body.name), io::xml_escape(name));
       if (cx.size() > 1) {
         svg += fmt::format("<animate attributeName=\"cx\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
                            duration, fmt::join(cx, ";"));

@@ -6,15 +6,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "number_text.hpp"
+
 namespace gearkit::dyn {
 
 namespace {
-
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
 
 double trapezoid(double x0, double y0, double x1, double y1) { return 0.5 * (y0 + y1) * (x1 - x0); }
 
@@ -35,22 +31,22 @@ PiecewiseLinear::PiecewiseLinear(std::vector<double> x, std::vector<double> y, b
     if (!std::isfinite(x_[i]) || !std::isfinite(y_[i]))
       throw std::invalid_argument("curve: point " + std::to_string(i + 1) + " is not finite");
     if (i > 0 && x_[i] < x_[i - 1])
-      throw std::invalid_argument("curve: abscissae must not decrease, found " + num(x_[i]) + " after " +
-                                  num(x_[i - 1]) + " at point " + std::to_string(i + 1));
+      throw std::invalid_argument("curve: abscissae must not decrease, found " + detail::num(x_[i], 9) + " after " +
+                                  detail::num(x_[i - 1], 9) + " at point " + std::to_string(i + 1));
     if (i > 1 && x_[i] == x_[i - 1] && x_[i] == x_[i - 2])
-      throw std::invalid_argument("curve: three points share the abscissa " + num(x_[i]) +
+      throw std::invalid_argument("curve: three points share the abscissa " + detail::num(x_[i], 9) +
                                   " (a step needs exactly two)");
   }
   if (!(x_.back() > x_.front()))
     throw std::invalid_argument("curve: the table spans no range (first and last abscissa are both " +
-                                num(x_.front()) + ")");
+                                detail::num(x_.front(), 9) + ")");
   if (periodic_) {
     double scale = 0;
     for (double v : y_) scale = std::max(scale, std::abs(v));
     if (std::abs(y_.front() - y_.back()) > 1e-9 * std::max(scale, 1e-300))
-      throw std::invalid_argument("curve is not periodic: value " + num(y_.front()) + " at the start (" +
-                                  num(x_.front()) + ") differs from " + num(y_.back()) + " at the end (" +
-                                  num(x_.back()) + ")");
+      throw std::invalid_argument("curve is not periodic: value " + detail::num(y_.front(), 9) + " at the start (" +
+                                  detail::num(x_.front(), 9) + ") differs from " + detail::num(y_.back(), 9) + " at the end (" +
+                                  detail::num(x_.back(), 9) + ")");
   }
   cumulative_.assign(x_.size(), 0.0);
   for (std::size_t i = 1; i < x_.size(); ++i)
@@ -121,7 +117,7 @@ PiecewiseLinear PiecewiseLinear::scaled(double k) const {
 
 PiecewiseLinear PiecewiseLinear::stretched(double k) const {
   if (!(k > 0) || !std::isfinite(k))
-    throw std::invalid_argument("curve: stretch factor must be positive and finite, found " + num(k));
+    throw std::invalid_argument("curve: stretch factor must be positive and finite, found " + detail::num(k, 9));
   std::vector<double> x = x_;
   for (double& v : x) v *= k;
   return PiecewiseLinear(std::move(x), y_, periodic_);
@@ -132,13 +128,13 @@ double PiecewiseLinear::max_value() const { return *std::max_element(y_.begin(),
 
 PiecewiseLinear sample(const std::function<double(double)>& f, double x0, double x1, int n, bool periodic) {
   if (n < 1) throw std::invalid_argument("sample: expected at least 1 interval, found " + std::to_string(n));
-  if (!(x1 > x0)) throw std::invalid_argument("sample: empty range [" + num(x0) + ", " + num(x1) + "]");
+  if (!(x1 > x0)) throw std::invalid_argument("sample: empty range [" + detail::num(x0, 9) + ", " + detail::num(x1, 9) + "]");
   std::vector<double> x(static_cast<std::size_t>(n) + 1), y(x.size());
   for (int i = 0; i <= n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     x[k] = i == n ? x1 : x0 + (x1 - x0) * i / n;
     y[k] = f(x[k]);
-    if (!std::isfinite(y[k])) throw std::invalid_argument("curve value is not finite at " + num(x[k]));
+    if (!std::isfinite(y[k])) throw std::invalid_argument("curve value is not finite at " + detail::num(x[k], 9));
   }
   return PiecewiseLinear(std::move(x), std::move(y), periodic);
 }
@@ -146,8 +142,8 @@ PiecewiseLinear sample(const std::function<double(double)>& f, double x0, double
 PiecewiseLinear difference(const PiecewiseLinear& f, const PiecewiseLinear& g) {
   const double tol = 1e-9 * f.range();
   if (std::abs(f.x_front() - g.x_front()) > tol || std::abs(f.x_back() - g.x_back()) > tol)
-    throw std::invalid_argument("curves cover different ranges: [" + num(f.x_front()) + ", " + num(f.x_back()) +
-                                "] and [" + num(g.x_front()) + ", " + num(g.x_back()) + "]");
+    throw std::invalid_argument("curves cover different ranges: [" + detail::num(f.x_front(), 9) + ", " + detail::num(f.x_back(), 9) +
+                                "] and [" + detail::num(g.x_front(), 9) + ", " + detail::num(g.x_back(), 9) + "]");
   std::vector<double> xs = f.x();
   for (double v : g.x()) xs.push_back(std::clamp(v, f.x_front(), f.x_back()));
   std::sort(xs.begin(), xs.end());

@@ -9,15 +9,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "number_text.hpp"
+
 namespace gearkit::dyn {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+using detail::num;
 
 std::string stage_name(const DriveLine& line, std::size_t i) {
   const std::string& n = line.stages[i].name;

@@ -5,15 +5,13 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "number_text.hpp"
+
 namespace gearkit::dyn {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+using detail::num;
 
 // Positive and negative parts of the integral of the line through (u, fu) and (v, fv).
 void add_segment(double u, double fu, double v, double fv, SignedIntegrals& s) {

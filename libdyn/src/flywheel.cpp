@@ -7,15 +7,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "number_text.hpp"
+
 namespace gearkit::dyn {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+using detail::num;
 
 int sign_of(double v, double tol) { return v > tol ? 1 : (v < -tol ? -1 : 0); }
 

@@ -10,17 +10,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "number_text.hpp"
+
 namespace gearkit::dyn {
 
 namespace odeint = boost::numeric::odeint;
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+using detail::num;
 
 using State = std::array<double, 2>;  // theta, omega
 

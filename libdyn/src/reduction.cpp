@@ -6,15 +6,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "number_text.hpp"
+
 namespace gearkit::dyn {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+using detail::num;
 
 void check_bodies(std::span<const BodyMass> bodies, std::span<const VelocityCoefficients> k) {
   if (bodies.size() != k.size())

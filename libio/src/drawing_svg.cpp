@@ -13,24 +13,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <gearkit/io/xml.hpp>
 
 namespace gearkit::io {
 namespace {
-
-std::string xml_escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += static_cast<unsigned char>(c) < 32 ? ' ' : c;
-    }
-  }
-  return out;
-}
 
 /// Coordinates with 4 decimals (0.1 micrometre), enough for any drawing and compact.
 /// An XML id from a layer name ("pitch curve" -> "layer-pitch_curve").

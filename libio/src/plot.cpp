@@ -7,26 +7,13 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <gearkit/io/xml.hpp>
 
 namespace gearkit::io {
 
 namespace {
 
 constexpr std::array kPalette = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b"};
-
-std::string xml_escape(std::string_view s) {
-  std::string r;
-  for (char c : s) {
-    switch (c) {
-      case '&': r += "&amp;"; break;
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += c;
-    }
-  }
-  return r;
-}
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity();

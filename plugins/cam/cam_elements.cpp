@@ -6,6 +6,7 @@
 // sigma = +1 for a cam turning counter-clockwise, -1 clockwise. Lifts are lengths (mm by
 // default) for a translating follower and angles (deg) for an oscillating one.
 #include "cam_elements.hpp"
+#include "cam_model.hpp"
 
 #include <gearkit/cam/motion_law.hpp>
 #include <gearkit/cam/motion_program.hpp>
@@ -63,32 +64,6 @@ class CamFollower final : public kin::Constraint {
   MotionProgram program_;
 };
 
-std::vector<gearkit::cam::Segment> read_program(io::MapReader& r, bool translating) {
-  std::vector<gearkit::cam::Segment> segments;
-  for (const YAML::Node& node : r.sequence("program")) {
-    io::MapReader s(node, r.file(), "cam program segment");
-    gearkit::cam::Segment seg;
-    const std::string kind = s.choice("kind", {"rise", "dwell", "fall"});
-    seg.kind = kind == "rise" ? gearkit::cam::SegmentKind::rise
-               : kind == "fall" ? gearkit::cam::SegmentKind::fall
-                                : gearkit::cam::SegmentKind::dwell;
-    seg.start = s.quantity("start", io::Quantity::angle, "deg");
-    seg.end = s.quantity("end", io::Quantity::angle, "deg");
-    if (kind != "dwell") {
-      const std::string law = s.string("law");
-      const auto l = gearkit::cam::law_from_name(law);
-      if (!l)
-        io::fail_at(s.mark("law"), fmt::format("expected a motion law ({}), found '{}'",
-                                               fmt::join(gearkit::cam::law_names(), ", "), law));
-      seg.law = *l;
-      seg.lift = translating ? s.quantity("lift", io::Quantity::length, "mm") : s.quantity("lift", io::Quantity::angle, "deg");
-    }
-    s.finish();
-    segments.push_back(seg);
-  }
-  return segments;
-}
-
 std::unique_ptr<kin::Constraint> create_cam_follower(const kin::ElementRequest& request) {
   io::MapReader r(request.node, request.file, "cam_follower");
   r.string("type");
@@ -112,8 +87,9 @@ std::unique_ptr<kin::Constraint> create_cam_follower(const kin::ElementRequest& 
     base = r.quantity("base", io::Quantity::angle, "deg");
   }
   if (follower.body == cam) io::fail_at(r.mark(), "expected the follower on another link than the cam");
-  const io::SourceMark program_mark = r.mark("program");
-  std::vector<gearkit::cam::Segment> segments = read_program(r, translating);
+  const io::SourceMark program_mark = r.mark("motion");
+  // The solver works in SI: translating lifts stay in metres.
+  std::vector<gearkit::cam::Segment> segments = read_motion_segments(r, !translating, 1.0);
   r.finish();
   try {
     return std::make_unique<CamFollower>(translating, follower, guide, axis, cam, cam_zero, sigma, base,

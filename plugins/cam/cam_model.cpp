@@ -28,7 +28,7 @@ gc::TableEnds table_ends(const std::string& s) {
 }
 
 /// One motion segment. Lifts are lengths for translating followers and angles for oscillating ones.
-gc::Segment read_segment(const YAML::Node& node, const std::string& file, bool angular_lift) {
+gc::Segment read_segment(const YAML::Node& node, const std::string& file, bool angular_lift, double metres_to_model) {
   io::MapReader r(node, file, "motion segment");
   gc::Segment seg;
   const std::string type = r.choice("type", {"rise", "dwell", "return", "table"});
@@ -40,7 +40,7 @@ gc::Segment read_segment(const YAML::Node& node, const std::string& file, bool a
   seg.end = r.quantity("to", io::Quantity::angle, "deg");
   const io::Quantity lift_q = angular_lift ? io::Quantity::angle : io::Quantity::length;
   const std::string lift_unit = angular_lift ? "deg" : "mm";
-  const double to_model = angular_lift ? 1 : kMm;  // oscillating: rad; translating: mm
+  const double to_model = angular_lift ? 1 : metres_to_model;  // oscillating: rad
   if (seg.kind == gc::SegmentKind::rise || seg.kind == gc::SegmentKind::fall) {
     const auto names = gc::law_names();
     seg.law = *gc::law_from_name(r.choice("law", names, std::string("cycloidal")));
@@ -67,6 +67,22 @@ gc::Segment read_segment(const YAML::Node& node, const std::string& file, bool a
 }
 
 }  // namespace
+
+std::vector<gc::Segment> read_motion_segments(io::MapReader& r, bool angular_lift, double metres_to_model,
+                                              std::vector<io::SourceMark>* marks) {
+  std::vector<gc::Segment> segments;
+  double level = 0;
+  for (const YAML::Node& item : r.sequence("motion")) {
+    gc::Segment seg = read_segment(item, r.file(), angular_lift, metres_to_model);
+    if (seg.kind == gc::SegmentKind::fall && std::isnan(seg.lift)) seg.lift = level;
+    if (seg.kind == gc::SegmentKind::rise) level += seg.lift;
+    if (seg.kind == gc::SegmentKind::fall) level -= seg.lift;
+    if (seg.kind == gc::SegmentKind::table && !seg.table.empty()) level = seg.table.back().s;
+    segments.push_back(seg);
+    if (marks) marks->push_back(io::mark_of(item, r.file()));
+  }
+  return segments;
+}
 
 CamModel load_cam_model(const std::string& path) {
   const io::YamlDocument doc = io::load_yaml_file(path);
@@ -108,20 +124,9 @@ CamModel load_cam_model(const std::string& path) {
                                                (oscillating ? 45.0 : 30.0) * std::numbers::pi / 180);
   cam.finish();
 
-  // Lifts of returns without 'lift' go back to the base circle: resolve them before validation.
-  std::vector<gc::Segment> segments;
   std::vector<io::SourceMark> segment_marks;
   const io::SourceMark motion_mark = root.mark("motion");
-  double level = 0;
-  for (const YAML::Node& item : root.sequence("motion")) {
-    gc::Segment seg = read_segment(item, doc.file, oscillating);
-    if (seg.kind == gc::SegmentKind::fall && std::isnan(seg.lift)) seg.lift = level;
-    if (seg.kind == gc::SegmentKind::rise) level += seg.lift;
-    if (seg.kind == gc::SegmentKind::fall) level -= seg.lift;
-    if (seg.kind == gc::SegmentKind::table && !seg.table.empty()) level = seg.table.back().s;
-    segments.push_back(seg);
-    segment_marks.push_back(io::mark_of(item, doc.file));
-  }
+  std::vector<gc::Segment> segments = read_motion_segments(root, oscillating, kMm, &segment_marks);
 
   if (const auto drawing = root.optional_node("output")) {
     io::MapReader out(*drawing, doc.file, "output");

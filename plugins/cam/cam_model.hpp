@@ -1,9 +1,11 @@
 #pragma once
 // Reading a cam model file (YAML, documented in docs/cam.md) into a libcam design.
 #include <gearkit/cam/cam_design.hpp>
+#include <gearkit/io/yaml_model.hpp>
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gearkit::plugins::cam {
 
@@ -19,6 +21,15 @@ struct CamModel {
   double follower_at = 0;             ///< cam angle of the follower in the SVG drawing [rad]
   std::optional<double> cutter_radius_mm;
 };
+
+/// Reads the `motion:` list of a mapping (docs/cam.md): the one syntax for motion programs, in
+/// `gearkit cam` files and in `cam_follower` elements of mechanism files. Returns without `lift`
+/// go back to the base circle. Translating lifts are SI lengths times `metres_to_model` (1000
+/// for libcam's millimetres, 1 for the SI solver); oscillating lifts are radians.
+/// @param marks if not null, receives each segment's position for later messages.
+/// @throws io::InputError for unknown keys, laws or units, with file:line:column.
+std::vector<gearkit::cam::Segment> read_motion_segments(io::MapReader& r, bool angular_lift, double metres_to_model,
+                                                        std::vector<io::SourceMark>* marks = nullptr);
 
 /// Loads and validates a cam model.
 /// @throws io::InputError "file:line:col: expected ..., found ..." for malformed YAML, unknown
