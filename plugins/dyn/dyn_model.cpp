@@ -1,11 +1,14 @@
 #include "dyn_model.hpp"
 
+#include "dyn_mechanism.hpp"
+
 #include <gearkit/io/quantity.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <stdexcept>
 
@@ -162,6 +165,18 @@ void read_load(io::MapReader& root, Model& m) {
     io::fail_at(r.mark(), "load: 'mass' and 'force' act at the rim and need the 'radius'");
   if (m.load.radius) m.line.shaft_inertia.back() += mass * *m.load.radius * *m.load.radius;
   m.load.resisting = optional_law(r, "resisting", "resisting torque of the load");
+  if (r.has("mechanism")) {
+    // A linkage from a `gearkit kin` model file, path relative to this file.
+    if (r.has("inertia_table")) io::fail_at(r.mark("mechanism"), "load: give 'mechanism' or 'inertia_table', not both");
+    m.load.inertia_table_mark = r.mark("mechanism");
+    std::filesystem::path path = r.string("mechanism");
+    if (path.is_relative()) path = std::filesystem::path(r.file()).parent_path() / path;
+    const long long intervals = r.optional_integer("mechanism_steps").value_or(360);
+    if (intervals < 36 || intervals > 36000)
+      io::fail_at(r.mark("mechanism_steps"), fmt::format("'mechanism_steps': expected 36 to 36000, found {}", intervals));
+    m.load.inertia_table.emplace(
+        mechanism_inertia_table(path.string(), static_cast<int>(intervals), m.load.inertia_table_mark));
+  }
   if (r.has("inertia_table")) {
     m.load.inertia_table_mark = r.mark("inertia_table");
     std::vector<double> angle, inertia;
