@@ -47,7 +47,7 @@ DofReport dof(const Model& model, Data& data) {
     std::vector<Eigen::Triplet<double>> pick;
     for (std::size_t i = 0; i < rows.size(); ++i) pick.emplace_back(static_cast<int>(i), rows[i], 1.0);
     selected.setFromTriplets(pick.begin(), pick.end());
-    Eigen::SparseMatrix<double> jt = (selected * data.phi_q_sparse).transpose();
+    Eigen::SparseMatrix<double> jt = (selected * data.phi_q).transpose();
     jt.makeCompressed();
     Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
     qr.setPivotThreshold(1e-9);

@@ -7,28 +7,32 @@ Constraint::~Constraint() = default;
 void Revolute::evaluate(const ConstraintInput& in, ConstraintOutput& out) const {
   const BodyState& i = in.bodies[0];
   const BodyState& j = in.bodies[1];
-  const Eigen::Vector2d si = rotate(i.theta, a_.local);
-  const Eigen::Vector2d sj = rotate(j.theta, b_.local);
-  out.phi = i.r + si - j.r - sj;
-  out.phi_q.setZero();
-  out.phi_q(0, 0) = 1.0;
-  out.phi_q(1, 1) = 1.0;
-  out.phi_q.col(2) = perp(si);
-  out.phi_q(0, 3) = -1.0;
-  out.phi_q(1, 4) = -1.0;
-  out.phi_q.col(5) = -perp(sj);
-  out.phi_t.setZero();
+  const Eigen::Vector2d si = i.rotated(a_.local);
+  const Eigen::Vector2d sj = j.rotated(b_.local);
+  out.phi(0) = i.r.x() + si.x() - j.r.x() - sj.x();
+  out.phi(1) = i.r.y() + si.y() - j.r.y() - sj.y();
+  // Columns (x_i, y_i, theta_i, x_j, y_j, theta_j); d(A s)/d theta = perp(A s) = (-s_y, s_x).
+  auto& J = out.phi_q;
+  J(0, 0) = 1.0, J(1, 0) = 0.0;
+  J(0, 1) = 0.0, J(1, 1) = 1.0;
+  J(0, 2) = -si.y(), J(1, 2) = si.x();
+  J(0, 3) = -1.0, J(1, 3) = 0.0;
+  J(0, 4) = 0.0, J(1, 4) = -1.0;
+  J(0, 5) = sj.y(), J(1, 5) = -sj.x();
+  out.phi_t(0) = 0.0, out.phi_t(1) = 0.0;
   // d2/dt2 (A s) = theta_dd perp(A s) - omega^2 A s: the omega^2 terms move to gamma.
-  out.gamma = i.omega * i.omega * si - j.omega * j.omega * sj;
+  const double wi2 = i.omega * i.omega, wj2 = j.omega * j.omega;
+  out.gamma(0) = wi2 * si.x() - wj2 * sj.x();
+  out.gamma(1) = wi2 * si.y() - wj2 * sj.y();
 }
 
 void projection_row(const ConstraintInput& in, const Eigen::Vector2d& p_local, const Eigen::Vector2d& q_local,
                     const Eigen::Vector2d& v_local, int row, ConstraintOutput& out) {
   const BodyState& j = in.bodies[0];  // carries P
   const BodyState& i = in.bodies[1];  // carries Q and the direction v
-  const Eigen::Vector2d sj = rotate(j.theta, p_local);
-  const Eigen::Vector2d si = rotate(i.theta, q_local);
-  const Eigen::Vector2d n = rotate(i.theta, v_local);
+  const Eigen::Vector2d sj = j.rotated(p_local);
+  const Eigen::Vector2d si = i.rotated(q_local);
+  const Eigen::Vector2d n = i.rotated(v_local);
   const Eigen::Vector2d d = j.r + sj - i.r - si;
   const Eigen::Vector2d d_dot = j.r_dot + j.omega * perp(sj) - i.r_dot - i.omega * perp(si);
   out.phi(row) = n.dot(d);
@@ -53,9 +57,9 @@ void Prismatic::evaluate(const ConstraintInput& in, ConstraintOutput& out) const
   const BodyState& s = in.bodies[0];
   const BodyState& g = in.bodies[1];
   out.phi(0) = s.theta - g.theta - relative_angle_;
-  out.phi_q.row(0).setZero();
-  out.phi_q(0, 2) = 1.0;
-  out.phi_q(0, 5) = -1.0;
+  auto& J = out.phi_q;
+  J(0, 0) = 0.0, J(0, 1) = 0.0, J(0, 2) = 1.0;
+  J(0, 3) = 0.0, J(0, 4) = 0.0, J(0, 5) = -1.0;
   out.phi_t(0) = 0.0;
   out.gamma(0) = 0.0;
   projection_row(in, slider_.local, guide_.local, perp(axis_), 1, out);
@@ -72,9 +76,9 @@ void AngleDriver::evaluate(const ConstraintInput& in, ConstraintOutput& out) con
   const double t = in.t;
   out.phi(0) = in.bodies[0].theta - in.bodies[1].theta -
                (in.input + motion_.speed * t + 0.5 * motion_.acceleration * t * t);
-  out.phi_q.setZero();
-  out.phi_q(0, 2) = 1.0;
-  out.phi_q(0, 5) = -1.0;
+  auto& J = out.phi_q;
+  J(0, 0) = 0.0, J(0, 1) = 0.0, J(0, 2) = 1.0;
+  J(0, 3) = 0.0, J(0, 4) = 0.0, J(0, 5) = -1.0;
   out.phi_t(0) = -(motion_.speed + motion_.acceleration * t);
   out.gamma(0) = motion_.acceleration;
 }

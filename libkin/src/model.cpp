@@ -13,6 +13,7 @@ std::optional<Eigen::Vector2d> Body::point(const std::string& point_name) const 
 int Model::add_body(Body body) {
   if (body.name == ground_.name || body_index(body.name))
     throw std::invalid_argument("duplicate body name '" + body.name + "'");
+  body_by_name_.emplace(body.name, static_cast<int>(bodies_.size()));
   bodies_.push_back(std::move(body));
   return static_cast<int>(bodies_.size()) - 1;
 }
@@ -26,6 +27,7 @@ int Model::add_constraint(std::string name, std::shared_ptr<const Constraint> co
                                   " of a model with " + std::to_string(bodies_.size()) + " bodies");
   const int rows = constraint->equations();
   const bool driver = constraint->is_driver();
+  constraint_by_name_.emplace(name, static_cast<int>(constraints_.size()));
   constraints_.push_back({std::move(name), std::move(constraint), equations_});
   equations_ += rows;
   const int index = static_cast<int>(constraints_.size()) - 1;
@@ -45,9 +47,9 @@ void Model::set_driver(int constraint, DriverQuantity quantity, double value) {
 
 std::optional<int> Model::body_index(const std::string& name) const {
   if (name == ground_.name) return kGround;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-    if (bodies_[i].name == name) return static_cast<int>(i);
-  return std::nullopt;
+  const auto found = body_by_name_.find(name);
+  if (found == body_by_name_.end()) return std::nullopt;
+  return found->second;
 }
 
 const std::string& Model::body_name(int index) const {
@@ -55,9 +57,9 @@ const std::string& Model::body_name(int index) const {
 }
 
 std::optional<int> Model::constraint_index(const std::string& name) const {
-  for (std::size_t i = 0; i < constraints_.size(); ++i)
-    if (constraints_[i].name == name) return static_cast<int>(i);
-  return std::nullopt;
+  const auto found = constraint_by_name_.find(name);
+  if (found == constraint_by_name_.end()) return std::nullopt;
+  return found->second;
 }
 
 Eigen::Vector2d Model::point_position(const Eigen::VectorXd& q, const BodyPoint& p) {

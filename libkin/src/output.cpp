@@ -14,7 +14,7 @@ BodyState state_of(const Data& data, int body) {
   if (body == kGround) return s;
   const int k = 3 * body;
   s.r = data.q.segment<2>(k);
-  s.theta = data.q(k + 2);
+  s.set_theta(data.q(k + 2));
   s.r_dot = data.qd.segment<2>(k);
   s.omega = data.qd(k + 2);
   return s;

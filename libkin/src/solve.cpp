@@ -1,5 +1,7 @@
 #include <gearkit/kin/solve.hpp>
 
+#include "jacobian_lu.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,8 +9,7 @@ namespace gearkit::kin {
 
 namespace {
 
-// Below this many coordinates a dense LU beats the sparse one (no symbolic analysis, no
-// indirection); above it the sparse LU keeps chains of loops near-linear.
+// Above this many coordinates rank tests use a sparse QR (dof.cpp); the LU is sparse always.
 constexpr int kDenseLimit = 64;
 
 bool is_square(const Model& model) { return model.equations() == model.coordinates(); }
@@ -35,168 +36,131 @@ Data::Data(const Model& model) {
   work = Eigen::VectorXd::Zero(n);
   step = Eigen::VectorXd::Zero(n);
   sparse = n > kDenseLimit && is_square(model);
+  body_states.assign(model.bodies().size(), BodyState{});
+  if (is_square(model)) lu = std::make_unique<JacobianLU>();
 
+  // Each constraint's slice of the flat workspace, and the pattern of Phi_q: every entry of
+  // every constraint's block on a moving body.
   local.resize(model.constraints().size());
   std::vector<Eigen::Triplet<double>> pattern;
+  int slots = 0, entries = 0;
   for (std::size_t k = 0; k < model.constraints().size(); ++k) {
     const Constraint& c = *model.constraints()[k].constraint;
+    const std::vector<int> bodies = c.bodies();
     Local& l = local[k];
-    l.bodies = c.bodies();
-    l.states.assign(l.bodies.size(), BodyState{});
-    const int rows = c.equations();
-    const int cols = 3 * static_cast<int>(l.bodies.size());
-    l.phi = Eigen::VectorXd::Zero(rows);
-    l.phi_t = Eigen::VectorXd::Zero(rows);
-    l.gamma = Eigen::VectorXd::Zero(rows);
-    l.phi_q = Eigen::MatrixXd::Zero(rows, cols);
-    if (sparse) {
-      const int r0 = model.constraints()[k].first_row;
-      for (int r = 0; r < rows; ++r)
-        for (std::size_t b = 0; b < l.bodies.size(); ++b)
-          if (l.bodies[b] != kGround)
-            for (int c3 = 0; c3 < 3; ++c3) pattern.emplace_back(r0 + r, 3 * l.bodies[b] + c3, 0.0);
-    }
+    l.rows = c.equations();
+    l.first_slot = slots;
+    l.slots = static_cast<int>(bodies.size());
+    l.first_entry = entries;
+    slots += l.slots;
+    entries += l.rows * 3 * l.slots;
+    local_bodies.insert(local_bodies.end(), bodies.begin(), bodies.end());
+    const int r0 = model.constraints()[k].first_row;
+    for (int r = 0; r < l.rows; ++r)
+      for (int body : bodies)
+        if (body != kGround)
+          for (int c3 = 0; c3 < 3; ++c3) pattern.emplace_back(r0 + r, 3 * body + c3, 0.0);
   }
-  if (sparse) {
-    phi_q_sparse.resize(m, n);
-    phi_q_sparse.setFromTriplets(pattern.begin(), pattern.end());
-    phi_q_sparse.makeCompressed();
-    for (std::size_t k = 0; k < model.constraints().size(); ++k) {
-      Local& l = local[k];
-      const int r0 = model.constraints()[k].first_row;
-      const int rows = static_cast<int>(l.phi.size());
-      const int cols = static_cast<int>(l.phi_q.cols());
-      l.value_index.assign(static_cast<std::size_t>(rows * cols), -1);
-      for (int r = 0; r < rows; ++r)
-        for (int c = 0; c < cols; ++c) {
-          const int body = l.bodies[static_cast<std::size_t>(c / 3)];
-          if (body == kGround) continue;
-          const double* base = phi_q_sparse.valuePtr();
-          l.value_index[static_cast<std::size_t>(r * cols + c)] =
-              static_cast<int>(&phi_q_sparse.coeffRef(r0 + r, 3 * body + c % 3) - base);
-        }
+  for (std::size_t d = 0; d < model.drivers().size(); ++d)
+    local[static_cast<std::size_t>(model.drivers()[d].constraint)].driver = static_cast<int>(d);
+  local_states.assign(static_cast<std::size_t>(slots), BodyState{});
+  local_phi_q.assign(static_cast<std::size_t>(entries), 0.0);
+  phi_q.resize(m, n);
+  phi_q.setFromTriplets(pattern.begin(), pattern.end());
+  phi_q.makeCompressed();
+  // Where each entry of a block on a moving body goes in Phi_q's values. Rows of different
+  // constraints never meet, so an entry is written by one block entry only, unless a
+  // constraint lists the same body twice: then entries are summed into a zeroed Phi_q.
+  std::vector<char> written(static_cast<std::size_t>(phi_q.nonZeros()), 0);
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    Local& l = local[k];
+    l.first_scatter = static_cast<int>(scatter.size());
+    const int r0 = model.constraints()[k].first_row;
+    for (int c = 0; c < 3 * l.slots; ++c) {
+      const int body = local_bodies[static_cast<std::size_t>(l.first_slot + c / 3)];
+      if (body == kGround) continue;
+      for (int r = 0; r < l.rows; ++r) {
+        const int at = static_cast<int>(&phi_q.coeffRef(r0 + r, 3 * body + c % 3) - phi_q.valuePtr());
+        if (written[static_cast<std::size_t>(at)]++) sum_jacobian_entries = true;
+        scatter.push_back({c * l.rows + r, at});
+      }
     }
-  } else {
-    phi_q_dense = Eigen::MatrixXd::Zero(m, n);
+    l.scatter_count = static_cast<int>(scatter.size()) - l.first_scatter;
   }
 }
 
 Data::~Data() = default;
 
-Eigen::MatrixXd Data::jacobian() const {
-  if (sparse) return Eigen::MatrixXd(phi_q_sparse);
-  return phi_q_dense;
-}
+Eigen::MatrixXd Data::jacobian() const { return Eigen::MatrixXd(phi_q); }
 
 namespace {
 
-// Evaluates every constraint at (data.q, data.qd, t); with `jacobian` false only Phi, Phi_t
-// and gamma are refreshed and the factorised Phi_q is kept (velocity changes gamma, not Phi_q).
-void evaluate_rows(const Model& model, Data& data, double t, bool jacobian) {
+// What evaluate_rows refreshes.
+enum class Refresh {
+  all,             // Phi, Phi_q, Phi_t, gamma at a new q
+  after_velocity,  // Phi_t and gamma for a new qd at the same q (gamma depends on qd)
+};
+
+// Evaluates every constraint at (data.q, data.qd, t).
+void evaluate_rows(const Model& model, Data& data, double t, Refresh refresh) {
   data.t = t;
-  if (jacobian && data.sparse)
-    std::fill(data.phi_q_sparse.valuePtr(), data.phi_q_sparse.valuePtr() + data.phi_q_sparse.nonZeros(), 0.0);
-  else if (jacobian)
-    data.phi_q_dense.setZero();
-  int driver = 0;
+  const bool jacobian = refresh == Refresh::all;
+  // Each body's pose, with the cosine and sine of its angle computed once for all its joints.
+  for (std::size_t b = 0; b < data.body_states.size(); ++b) {
+    BodyState& s = data.body_states[b];
+    const int i = 3 * static_cast<int>(b);
+    if (refresh != Refresh::after_velocity) {
+      s.r = data.q.segment<2>(i);
+      s.set_theta(data.q(i + 2));
+    }
+    s.r_dot = data.qd.segment<2>(i);
+    s.omega = data.qd(i + 2);
+  }
+  double* values = data.phi_q.valuePtr();
+  if (jacobian && data.sum_jacobian_entries) std::fill(values, values + data.phi_q.nonZeros(), 0.0);
+  static const BodyState ground{};
   const auto& constraints = model.constraints();
   for (std::size_t k = 0; k < constraints.size(); ++k) {
-    const Constraint& c = *constraints[k].constraint;
-    Data::Local& l = data.local[k];
-    for (std::size_t b = 0; b < l.bodies.size(); ++b) {
-      BodyState& s = l.states[b];
-      const int body = l.bodies[b];
-      if (body == kGround) {
-        s = BodyState{};
-      } else {
-        const int i = 3 * body;
-        s.r = data.q.segment<2>(i);
-        s.theta = data.q(i + 2);
-        s.r_dot = data.qd.segment<2>(i);
-        s.omega = data.qd(i + 2);
-      }
-    }
-    ConstraintInput in{l.states, t, 0.0};
-    if (c.is_driver()) in.input = data.inputs(driver++);
-    ConstraintOutput out{l.phi, l.phi_q, l.phi_t, l.gamma};
-    c.evaluate(in, out);
+    const Data::Local& l = data.local[k];
+    BodyState* states = data.local_states.data() + l.first_slot;
+    const int* bodies = data.local_bodies.data() + l.first_slot;
+    for (int b = 0; b < l.slots; ++b) states[b] = bodies[b] == kGround ? ground : data.body_states[static_cast<std::size_t>(bodies[b])];
+    const ConstraintInput in{std::span<const BodyState>(states, static_cast<std::size_t>(l.slots)), t,
+                             l.driver >= 0 ? data.inputs(l.driver) : 0.0};
     const int r0 = constraints[k].first_row;
-    const int rows = static_cast<int>(l.phi.size());
-    data.phi.segment(r0, rows) = l.phi;
-    data.phi_t.segment(r0, rows) = l.phi_t;
-    data.gamma.segment(r0, rows) = l.gamma;
+    double* block = data.local_phi_q.data() + l.first_entry;
+    ConstraintOutput out{data.phi.segment(r0, l.rows), Eigen::Map<Eigen::MatrixXd>(block, l.rows, 3 * l.slots),
+                         data.phi_t.segment(r0, l.rows), data.gamma.segment(r0, l.rows)};
+    constraints[k].constraint->evaluate(in, out);
     if (!jacobian) continue;
-    const int cols = static_cast<int>(l.phi_q.cols());
-    if (data.sparse) {
-      double* values = data.phi_q_sparse.valuePtr();
-      for (int r = 0; r < rows; ++r)
-        for (int col = 0; col < cols; ++col) {
-          const int at = l.value_index[static_cast<std::size_t>(r * cols + col)];
-          if (at >= 0) values[at] += l.phi_q(r, col);
-        }
-    } else {
-      for (std::size_t b = 0; b < l.bodies.size(); ++b) {
-        if (l.bodies[b] == kGround) continue;
-        data.phi_q_dense.block(r0, 3 * l.bodies[b], rows, 3) += l.phi_q.block(0, 3 * static_cast<int>(b), rows, 3);
-      }
-    }
+    const Data::Scatter* to = data.scatter.data() + l.first_scatter;
+    if (data.sum_jacobian_entries)
+      for (int e = 0; e < l.scatter_count; ++e) values[to[e].value] += block[to[e].entry];
+    else
+      for (int e = 0; e < l.scatter_count; ++e) values[to[e].value] = block[to[e].entry];
   }
   if (jacobian) data.factored = false;
 }
 
 }  // namespace
 
-void evaluate_constraints(const Model& model, Data& data, double t) { evaluate_rows(model, data, t, true); }
+void evaluate_constraints(const Model& model, Data& data, double t) { evaluate_rows(model, data, t, Refresh::all); }
 
-namespace {
-bool factorize_impl(const Model& model, Data& data, bool estimate_condition);
-}
-
-bool factorize(const Model& model, Data& data) { return factorize_impl(model, data, true); }
-
-namespace {
-
-bool factorize_impl(const Model& model, Data& data, bool estimate_condition) {
+bool factorize(const Model& model, Data& data) {
   data.factored = true;
   data.singular = false;
   data.determinant_sign = 0;
   data.rcond = 1.0;
-  if (data.sparse) {
-    if (!data.sparse_pattern_analysed) {
-      data.sparse_lu.analyzePattern(data.phi_q_sparse);
-      data.sparse_pattern_analysed = true;
-    }
-    data.sparse_lu.factorize(data.phi_q_sparse);
-    if (data.sparse_lu.info() != Eigen::Success) {
-      data.singular = true;
-      return false;
-    }
-    data.determinant_sign = static_cast<int>(data.sparse_lu.signDeterminant());
-    // SparseLU does not estimate the condition; a tiny pivot relative to the largest one is
-    // the warning sign of a dead point.
-    const double log_det = data.sparse_lu.logAbsDeterminant();
-    if (!std::isfinite(log_det)) {
-      data.singular = true;
-      return false;
-    }
-    return true;
-  }
-  if (is_square(model)) {
-    data.dense_lu.compute(data.phi_q_dense);
-    const double det = data.dense_lu.determinant();
-    // The condition estimate costs a few triangular solves; Newton iterations skip it (a
-    // singular step shows up as non-finite) and the converged position gets it.
-    data.rcond = estimate_condition ? data.dense_lu.rcond() : (det != 0.0 && std::isfinite(det) ? 1.0 : 0.0);
-    if (!(data.rcond > 1e-13)) {
-      data.singular = true;
-      return false;
-    }
-    data.determinant_sign = det > 0 ? 1 : (det < 0 ? -1 : 0);
-    return true;
+  if (data.lu) {
+    const bool ok = data.lu->factorize(data.phi_q);
+    data.rcond = data.lu->rcond();
+    data.determinant_sign = data.lu->determinant_sign();
+    data.singular = !ok;
+    return ok;
   }
   // Redundant (more equations than coordinates) or under-driven: least squares via QR.
   data.dense_qr.setThreshold(1e-10);
-  data.dense_qr.compute(data.phi_q_dense);
+  data.dense_qr.compute(data.jacobian());
   if (data.dense_qr.rank() < model.coordinates()) {
     data.singular = true;
     return false;
@@ -204,20 +168,56 @@ bool factorize_impl(const Model& model, Data& data, bool estimate_condition) {
   return true;
 }
 
+namespace {
+
+// Solves Phi_q x = b in place with the current factorisation (least squares when redundant).
+void solve_in_place(Data& data, Eigen::VectorXd& b) {
+  if (data.lu) data.lu->solve(b.data());
+  else b = data.dense_qr.solve(b).eval();
+}
+
 }  // namespace
 
 double residual(const Data& data) { return data.phi.size() ? data.phi.cwiseAbs().maxCoeff() : 0.0; }
 
 Eigen::VectorXd solve_with_jacobian(Data& data, const Eigen::VectorXd& rhs) {
-  if (data.sparse) return data.sparse_lu.solve(rhs);
-  if (data.phi_q_dense.rows() == data.phi_q_dense.cols()) return data.dense_lu.solve(rhs);
-  return data.dense_qr.solve(rhs);
+  Eigen::VectorXd x = rhs;
+  solve_in_place(data, x);
+  return x;
 }
 
 Eigen::VectorXd solve_with_jacobian_transpose(Data& data, const Eigen::VectorXd& rhs) {
-  if (data.sparse) return data.sparse_lu.transpose().solve(rhs);
-  return data.dense_lu.transpose().solve(rhs);
+  Eigen::VectorXd y = rhs;
+  if (data.lu) data.lu->solve_transpose(y.data());
+  else y = data.dense_qr.transpose().solve(rhs);
+  return y;
 }
+
+namespace {
+
+double largest_angle(const Eigen::VectorXd& step) {
+  double largest = 0.0;
+  for (int i = 2; i < step.size(); i += 3) largest = std::max(largest, std::abs(step(i)));
+  return largest;
+}
+
+// The chord step of SolverOptions::reuse_factorization: one Newton step from the guess with
+// the factorisation still held by data.lu (from a nearby converged position; evaluating Phi_q
+// does not touch it). Expects Phi evaluated at the guess (residual `before`). Leaves Phi and
+// Phi_q evaluated at the new q and @returns true if the step reduced the residual; otherwise
+// data.q is back at the guess, nothing is evaluated there, and @returns false.
+bool chord_step(const Model& model, Data& data, double t, const SolverOptions& options, double before) {
+  data.step = data.phi;
+  data.lu->solve(data.step.data());
+  if (!data.step.allFinite() || largest_angle(data.step) > options.max_angle_step) return false;
+  data.q -= data.step;
+  evaluate_constraints(model, data, t);
+  if (residual(data) < before) return true;
+  data.q = data.work;
+  return false;
+}
+
+}  // namespace
 
 PositionReport solve_position(const Model& model, Data& data, double t, const SolverOptions& options) {
   PositionReport report;
@@ -227,13 +227,25 @@ PositionReport solve_position(const Model& model, Data& data, double t, const So
     return report;
   }
   data.work = data.q;  // the guess, restored on failure
-  for (int iteration = 0; iteration <= options.max_iterations; ++iteration) {
+  int iteration = 0;
+  bool evaluated = false;
+  if (options.reuse_factorization && data.lu && data.factored && !data.singular) {
     evaluate_constraints(model, data, t);
+    const double before = residual(data);
+    evaluated = true;
+    if (std::isfinite(before) && before > options.tolerance && options.max_iterations > 0) {
+      evaluated = chord_step(model, data, t, options, before);
+      if (evaluated) iteration = 1;
+    }
+  }
+  for (; iteration <= options.max_iterations; ++iteration) {
+    if (!evaluated) evaluate_constraints(model, data, t);
+    evaluated = false;
     report.residual = residual(data);
     report.iterations = iteration;
     if (!std::isfinite(report.residual)) break;
     const bool done = report.residual <= options.tolerance;
-    const bool ok = factorize_impl(model, data, done);
+    const bool ok = factorize(model, data);
     if (done) {
       report.converged = true;
       report.singular = !ok;
@@ -243,15 +255,12 @@ PositionReport solve_position(const Model& model, Data& data, double t, const So
       report.singular = true;
       break;
     }
-    Eigen::VectorXd& step = data.step;
-    if (data.sparse) step = data.sparse_lu.solve(data.phi);
-    else if (model.equations() == model.coordinates()) step = data.dense_lu.solve(data.phi);
-    else step = data.dense_qr.solve(data.phi);
-    double largest_angle = 0.0;
-    for (int i = 2; i < step.size(); i += 3) largest_angle = std::max(largest_angle, std::abs(step(i)));
-    if (largest_angle > options.max_angle_step) step *= options.max_angle_step / largest_angle;
-    if (!step.allFinite()) break;
-    data.q -= step;
+    data.step = data.phi;
+    solve_in_place(data, data.step);
+    const double largest = largest_angle(data.step);
+    if (largest > options.max_angle_step) data.step *= options.max_angle_step / largest;
+    if (!data.step.allFinite()) break;
+    data.q -= data.step;
   }
   data.q = data.work;
   evaluate_constraints(model, data, t);
@@ -267,32 +276,44 @@ PositionReport solve_position(const Model& model, Data& data, double t, const So
 bool solve_velocity(const Model& model, Data& data) {
   if (!data.factored && !factorize(model, data)) return false;
   if (data.singular) return false;
-  data.step = -data.phi_t;
-  if (data.sparse) data.qd = data.sparse_lu.solve(data.step);
-  else if (model.equations() == model.coordinates()) data.qd = data.dense_lu.solve(data.step);
-  else data.qd = data.dense_qr.solve(data.step);
+  data.qd = -data.phi_t;
+  solve_in_place(data, data.qd);
   // gamma depends on qd; Phi_q and its factorisation stay (q did not change).
-  evaluate_rows(model, data, data.t, false);
+  evaluate_rows(model, data, data.t, Refresh::after_velocity);
+  return true;
+}
+
+bool solve_velocity_along(const Model& model, Data& data, const Eigen::VectorXd& dq, double input_speed) {
+  if (!data.factored && !factorize(model, data)) return false;
+  if (data.singular) return false;
+  data.qd = input_speed * dq;
+  evaluate_rows(model, data, data.t, Refresh::after_velocity);
   return true;
 }
 
 bool solve_acceleration(const Model& model, Data& data) {
   if (!data.factored && !factorize(model, data)) return false;
   if (data.singular) return false;
-  if (data.sparse) data.qdd = data.sparse_lu.solve(data.gamma);
-  else if (model.equations() == model.coordinates()) data.qdd = data.dense_lu.solve(data.gamma);
-  else data.qdd = data.dense_qr.solve(data.gamma);
+  data.qdd = data.gamma;
+  solve_in_place(data, data.qdd);
+  return true;
+}
+
+bool input_sensitivity(const Model& model, Data& data, int driver, Eigen::VectorXd& dq) {
+  if (!data.factored && !factorize(model, data)) return false;
+  if (data.singular) return false;
+  // d Phi / d f0 is -1 on the driver's row, so Phi_q dq/df0 = e_row.
+  dq.setZero(model.equations());
+  const Driver& d = model.drivers().at(static_cast<std::size_t>(driver));
+  dq(model.constraints()[static_cast<std::size_t>(d.constraint)].first_row) = 1.0;
+  solve_in_place(data, dq);
   return true;
 }
 
 Eigen::VectorXd input_sensitivity(const Model& model, Data& data, int driver) {
-  if (!data.factored && !factorize(model, data)) return {};
-  if (data.singular) return {};
-  // d Phi / d f0 is -1 on the driver's row, so Phi_q dq/df0 = e_row.
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(model.equations());
-  const Driver& d = model.drivers().at(static_cast<std::size_t>(driver));
-  rhs(model.constraints()[static_cast<std::size_t>(d.constraint)].first_row) = 1.0;
-  return solve_with_jacobian(data, rhs);
+  Eigen::VectorXd dq;
+  if (!input_sensitivity(model, data, driver, dq)) return {};
+  return dq;
 }
 
 Eigen::Vector2d point_position(const Data& data, const BodyPoint& p) { return Model::point_position(data.q, p); }

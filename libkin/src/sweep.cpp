@@ -1,6 +1,8 @@
 #include <gearkit/kin/sweep.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 
 namespace gearkit::kin {
@@ -21,17 +23,30 @@ struct Anchor {
   int determinant_sign = 0;
 };
 
-// Tries to move from `from` to `target`: predicts with the sensitivity (and its change since
-// `previous` when given), solves, and checks that the branch is kept.
-bool advance(const Model& model, Data& data, int driver, const Anchor& from, const Anchor* previous, double target,
-             const SolverOptions& options, Anchor& to, int& iterations) {
+// Tries to move from `from` to `target`: predicts, solves, and checks that the branch is kept.
+// The prediction integrates the quadratic through the last three sensitivities dq/d(input)
+// (`from`, `previous`, `before`; fewer when absent): its error is O(h^4), so at fine steps the
+// predicted pose usually meets the tolerance without a Newton step. Writes into `to`, whose
+// vectors are reused from one position to the next (a sweep does not allocate per position).
+bool advance(const Model& model, Data& data, int driver, const Anchor& from, const Anchor* previous,
+             const Anchor* before, double target, const SolverOptions& options, bool velocities, Anchor& to,
+             int& iterations) {
   const double h = target - from.input;
-  data.q = from.q + from.dq * h;
-  if (previous && previous->input != from.input && previous->dq.size() == from.dq.size()) {
-    const Eigen::VectorXd curvature = (from.dq - previous->dq) / (from.input - previous->input);
-    data.q += 0.5 * curvature * h * h;
+  to.q = from.q + from.dq * h;  // the prediction, kept until the branch check
+  const auto usable = [&](const Anchor* a, const Anchor& later) {
+    return a && a->input != later.input && a->dq.size() == from.dq.size();
+  };
+  if (usable(previous, from)) {
+    // Newton form of the interpolant: dq(s) = d0 + d01 (s - s0) + d012 (s - s0)(s - s1).
+    const double s0 = from.input, s1 = previous->input;
+    to.q += (0.5 * h * h / (s0 - s1)) * (from.dq - previous->dq);
+    if (usable(before, *previous) && before->input != s0) {
+      const double s2 = before->input;
+      const double c = (h * h * h / 3.0 + 0.5 * (s0 - s1) * h * h) / (s0 - s2);
+      to.q += (c / (s0 - s1)) * (from.dq - previous->dq) - (c / (s1 - s2)) * (previous->dq - before->dq);
+    }
   }
-  const Eigen::VectorXd predicted = data.q;
+  data.q = to.q;
   data.inputs(driver) = target;
   const PositionReport report = solve_position(model, data, data.t, options);
   iterations = report.iterations;
@@ -40,14 +55,23 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
   // bifurcation such as a flattened parallelogram): treat as the dead point.
   if (data.rcond < 1e-10) return false;
   if (from.determinant_sign != 0 && data.determinant_sign != from.determinant_sign) return false;
-  if (largest_angle_change(data.q, predicted) > 0.1) return false;
+  if (largest_angle_change(data.q, to.q) > 0.1) return false;
   to.input = target;
   to.q = data.q;
-  to.dq = input_sensitivity(model, data, driver);
   to.determinant_sign = data.determinant_sign;
-  if (to.dq.size() != data.q.size() || !to.dq.allFinite()) return false;
-  // Velocities and accelerations with the factorisation at hand (no second solve later).
-  if (solve_velocity(model, data) && solve_acceleration(model, data)) {
+  if (!input_sensitivity(model, data, driver, to.dq) || !to.dq.allFinite()) return false;
+  if (!velocities) return true;
+  // Velocities and accelerations with the factorisation at hand. Phi_q qd = -Phi_t; when Phi_t
+  // vanishes off the swept driver's row (no other driver moves: joints and elements do not
+  // depend on time) the right-hand side is a multiple of that row's unit vector, so qd is the
+  // same multiple of dq = Phi_q^-1 e_row and needs no solve of its own.
+  const int row = model.constraints()[static_cast<std::size_t>(model.drivers()[static_cast<std::size_t>(driver)].constraint)].first_row;
+  const double input_speed = -data.phi_t(row);
+  data.phi_t(row) = 0.0;
+  const bool only_this_driver = data.phi_t.isZero(0.0);
+  data.phi_t(row) = -input_speed;
+  const bool solved = only_this_driver ? solve_velocity_along(model, data, to.dq, input_speed) : solve_velocity(model, data);
+  if (solved && solve_acceleration(model, data)) {
     to.qd = data.qd;
     to.qdd = data.qdd;
   }
@@ -70,7 +94,7 @@ OutputExtreme locate_extreme(const Model& model, Data& data, const SweepOptions&
     if (!(x > std::min(a.input, b.input) && x < std::max(a.input, b.input))) x = 0.5 * (a.input + b.input);
     Anchor mid;
     int iterations = 0;
-    if (!advance(model, data, options.driver, a, nullptr, x, options.solver, mid, iterations)) break;
+    if (!advance(model, data, options.driver, a, nullptr, nullptr, x, options.solver, false, mid, iterations)) break;
     data.q = mid.q;
     const double dm = output_derivative(model, data, out, mid.dq);
     best = mid;
@@ -128,22 +152,28 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
   result.assembled = true;
   Anchor current{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
                  data.determinant_sign};
-  Anchor previous = current;
+  Anchor before = current, previous = current, next = current;
+  result.samples.reserve(static_cast<std::size_t>(std::min<long>(count, 1L << 20)));
   auto record = [&](const Anchor& a, int iterations) {
     if (options.velocities) result.samples.push_back({a.input, a.q, a.qd, a.qdd, iterations});
     else result.samples.push_back({a.input, a.q, {}, {}, iterations});
   };
   record(current, first.iterations);
 
+  // Continuation steps take their first Newton step with the factorisation of the position
+  // they start from (SolverOptions::reuse_factorization), valid while nothing else has
+  // factorised since (a rejected step or the location of an extreme).
+  SolverOptions chord = options.solver;
+  chord.reuse_factorization = true;
+  bool factorised_at_current = true;
+
   // Output derivatives at the last sample, for the extremes.
-  std::vector<double> last_derivative;
-  auto derivatives_at = [&](const Anchor& a) {
-    std::vector<double> d;
+  std::vector<double> last_derivative(options.outputs.size(), 0.0), derivative = last_derivative;
+  auto derivatives_at = [&](const Anchor& a, std::vector<double>& d) {
     data.q = a.q;
-    for (const Output& o : options.outputs) d.push_back(output_derivative(model, data, o, a.dq));
-    return d;
+    for (std::size_t o = 0; o < options.outputs.size(); ++o) d[o] = output_derivative(model, data, options.outputs[o], a.dq);
   };
-  last_derivative = derivatives_at(current);
+  derivatives_at(current, last_derivative);
   std::vector<Anchor> last_significant(options.outputs.size(), current);
 
   for (long k = 1; k < count; ++k) {
@@ -157,26 +187,32 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
     while (current.input != target) {
       const double remaining = target - current.input;
       if (std::abs(h) > std::abs(remaining)) h = remaining;
-      Anchor next;
-      if (advance(model, data, options.driver, current, &previous, current.input + h, options.solver, next, iterations)) {
-        // Extremes of outputs between current and next.
-        const std::vector<double> d = derivatives_at(next);
-        // A sign change of d(output)/d(input) since the last sample where it was clearly
-        // non-zero brackets an extreme; derivatives below kFlat (1 nm or 1 nrad per unit
-        // input) are round-off (a constant output, or an extreme falling on a sample).
+      if (advance(model, data, options.driver, current, &previous, &before, current.input + h,
+                  factorised_at_current ? chord : options.solver, options.velocities, next, iterations)) {
+        factorised_at_current = true;
+        // Extremes of outputs between current and next: a sign change of d(output)/d(input)
+        // since the last sample where it was clearly non-zero brackets an extreme;
+        // derivatives below kFlat (1 nm or 1 nrad per unit input) are round-off (a constant
+        // output, or an extreme falling on a sample).
         constexpr double kFlat = 1e-9;
-        for (std::size_t o = 0; o < d.size(); ++o) {
-          if (std::abs(d[o]) <= kFlat) continue;
-          if (std::abs(last_derivative[o]) > kFlat && (last_derivative[o] > 0.0) != (d[o] > 0.0))
+        derivatives_at(next, derivative);
+        for (std::size_t o = 0; o < derivative.size(); ++o) {
+          const double d = derivative[o];
+          if (std::abs(d) <= kFlat) continue;
+          if (std::abs(last_derivative[o]) > kFlat && (last_derivative[o] > 0.0) != (d > 0.0)) {
             result.extremes.push_back(locate_extreme(model, data, options, static_cast<int>(o), last_significant[o],
-                                                     last_derivative[o], next, d[o]));
-          last_derivative[o] = d[o];
+                                                     last_derivative[o], next, d));
+            factorised_at_current = false;
+          }
+          last_derivative[o] = d;
           last_significant[o] = next;
         }
-        previous = current;
-        current = next;
+        std::swap(before, previous);
+        std::swap(previous, current);
+        std::swap(current, next);
         h *= 2.0;
       } else {
+        factorised_at_current = false;
         h *= 0.5;
         if (std::abs(h) < options.min_step) {
           dead = true;

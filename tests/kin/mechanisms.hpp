@@ -84,6 +84,40 @@ inline Model four_bar(const FourBarDims& f, double theta2, Motion motion = {1.0,
   return m;
 }
 
+/// A chain of n four-bars of dimensions f, each rocker driving the next loop as its crank:
+/// loop k has its ground pivots at (k d, 0) and ((k + 1) d, 0); the rocker of loop k carries,
+/// on its own axis, the crank end "A" (at distance a from its pivot) of loop k + 1. So the crank
+/// angle of loop k + 1 is the rocker angle of loop k, and loop by loop the open-branch closed
+/// form gives every angle. Drawn at input angle theta2 on the open branch; driver on the first
+/// crank (unit speed). Bodies: crank 0, then (coupler, rocker) per loop; 3 (2n + 1) coordinates.
+inline Model four_bar_chain(const FourBarDims& f, int n, double theta2 = 0.0) {
+  Model m;
+  int crank = -2;
+  double crank_angle = theta2;
+  for (int k = 0; k < n; ++k) {
+    const std::string i = std::to_string(k), next = std::to_string(k + 1);
+    const Eigen::Vector2d o2(k * f.d, 0.0), o4((k + 1) * f.d, 0.0);
+    m.ground().points.emplace_back("O" + next, o4);
+    const auto [theta3, theta4] = four_bar_closed_form(f, crank_angle);
+    const Eigen::Vector2d A = o2 + polar(f.a, crank_angle), B = A + polar(f.b, theta3);
+    if (k == 0) {
+      m.ground().points.emplace_back("O0", o2);
+      crank = add_link(m, "crank", crank_angle, {{"O0", o2}, {"A0", A}});
+      pin(m, "O0", crank, "O0", kGround, "O0");
+    }
+    const int coupler = add_link(m, "coupler" + i, theta3, {{"A", A}, {"B", B}});
+    const int rocker = add_link(m, "rocker" + i, theta4, {{"O", o4}, {"B", B}, {"A" + next, o4 + polar(f.a, theta4)}});
+    pin(m, "A" + i, crank, "A" + i, coupler, "A");
+    pin(m, "B" + i, coupler, "B", rocker, "B");
+    pin(m, "O" + next, rocker, "O", kGround, "O" + next);
+    crank = rocker;
+    crank_angle = theta4;
+  }
+  const int drv = m.add_constraint("input", std::make_shared<AngleDriver>(0, kGround, Motion{1.0, 0.0}));
+  m.set_driver(drv, DriverQuantity::angle, theta2);
+  return m;
+}
+
 /// Seed 004 (exam 2020-21, exercise 1), the pantograph: O at the origin, crank OP (l1), coupler
 /// Q-P-R (QP = l3), slider Q on the vertical line x = d, parallelogram O P R S, output arm R-S-T.
 /// Dimensions implied by the seed's answers: l1 + l3 = 400 mm and d = 200 mm (s_max =

@@ -20,7 +20,7 @@ struct Trajectory {
       const Eigen::Vector3d q = q0[i] + qd[i] * t + 0.5 * qdd[i] * t * t;
       const Eigen::Vector3d v = qd[i] + qdd[i] * t;
       s[i].r = q.head<2>();
-      s[i].theta = q(2);
+      s[i].set_theta(q(2));
       s[i].r_dot = v.head<2>();
       s[i].omega = v(2);
     }
@@ -77,8 +77,8 @@ void check(const Constraint& c, double input = 0.3) {
         plus[b].r(j) += e;
         minus[b].r(j) -= e;
       } else {
-        plus[b].theta += e;
-        minus[b].theta -= e;
+        plus[b].set_theta(plus[b].theta + e);
+        minus[b].set_theta(minus[b].theta - e);
       }
       const Eigen::VectorXd col = (evaluate(c, plus, t, input).phi - evaluate(c, minus, t, input).phi) / (2 * e);
       for (int k = 0; k < c.equations(); ++k)

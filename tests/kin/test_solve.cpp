@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+
 #include "mechanisms.hpp"
 
 namespace gearkit::kin {
@@ -148,6 +151,103 @@ TEST(SolvePosition, UnderDrivenModelIsRefused) {
   const PositionReport r = solve_position(free, data, 0.0);
   EXPECT_FALSE(r.converged);
   EXPECT_NE(r.message.find("under-driven"), std::string::npos) << r.message;
+}
+
+// The sparse LU (KLU) against Eigen's dense LU, an independent factorisation: the sign of
+// det(Phi_q) drives the branch check of sweeps, and it is assembled from KLU's pivots and the
+// parities of its row and column permutations (block triangular form included). A chain of
+// ten four-bars (63 coordinates, eleven diagonal blocks) at 200 poses off the constraint
+// manifold, one after another, exercises both refactorisation with the old pivots and fresh
+// pivoting when they decay.
+TEST(Factorisation, DeterminantSignAgreesWithDenseLU) {
+  const Model m = testing::four_bar_chain({0.040, 0.120, 0.080, 0.100}, 10, 30 * kDeg);
+  Data data(m);
+  const Eigen::VectorXd drawn = data.q;
+  std::srand(7);
+  int positive = 0, negative = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    data.q = drawn + (trial < 100 ? 0.05 : 1.5) * Eigen::VectorXd::Random(drawn.size());
+    evaluate_constraints(m, data, 0.0);
+    ASSERT_TRUE(factorize(m, data)) << trial;
+    const Eigen::PartialPivLU<Eigen::MatrixXd> dense(data.jacobian());
+    const double det = dense.determinant();
+    ASSERT_NE(det, 0.0);
+    EXPECT_EQ(data.determinant_sign, det > 0 ? 1 : -1) << trial;
+    (det > 0 ? positive : negative) += 1;
+    // The LU solves like the dense one.
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(m.equations(), -1.0, 2.0);
+    const Eigen::VectorXd x = solve_with_jacobian(data, b), x_dense = dense.solve(b);
+    EXPECT_LE((x - x_dense).norm(), 1e-9 * (1.0 + x_dense.norm())) << trial;
+    const Eigen::VectorXd y = solve_with_jacobian_transpose(data, b), y_dense = dense.transpose().solve(b);
+    EXPECT_LE((y - y_dense).norm(), 1e-9 * (1.0 + y_dense.norm())) << trial;
+  }
+  EXPECT_GT(positive, 10);  // both signs were met, so the test can tell them apart
+  EXPECT_GT(negative, 10);
+}
+
+// At a toggle the Jacobian is singular; nearby its condition estimate collapses, far away it
+// does not. Triple rocker 80/90/100/120 mm: coupler and rocker align when |A O4| = b + c.
+TEST(Factorisation, ConditionEstimateCollapsesAtAToggle) {
+  const FourBarDims f{0.080, 0.090, 0.100, 0.120};
+  const double toggle = std::acos((f.a * f.a + f.d * f.d - (f.b + f.c) * (f.b + f.c)) / (2 * f.a * f.d));
+  Model m = testing::four_bar(f, 60 * kDeg);
+  Data data(m);
+  ASSERT_TRUE(solve_position(m, data, 0.0).converged);
+  EXPECT_GT(data.rcond, 1e-4);
+  const double far = data.rcond;
+  // Walk up to the toggle along the branch, halving the distance (the smallest singular value
+  // falls like its square root).
+  for (double gap = 10 * kDeg; gap > 1e-11; gap *= 0.5) {
+    data.inputs(0) = toggle - gap;
+    ASSERT_TRUE(solve_position(m, data, 0.0).converged) << gap;
+  }
+  EXPECT_LT(data.rcond, 1e-4 * far);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(data.jacobian());
+  const double sigma_ratio = svd.singularValues().tail<1>()(0) / svd.singularValues()(0);
+  EXPECT_LT(sigma_ratio, 1e-4);  // the independent check that this is near-singular
+}
+
+// A chord first step with the factorisation of a nearby solution, or even of a far-away pose
+// (then the step is undone), reaches the same solution as plain Newton-Raphson.
+TEST(SolvePosition, ReusedFactorisationGivesTheSameSolution) {
+  const FourBarDims f{0.040, 0.120, 0.080, 0.100};
+  Model m = testing::four_bar(f, 30 * kDeg);
+  SolverOptions reuse;
+  reuse.reuse_factorization = true;
+  reuse.tolerance = 1e-12;
+  SolverOptions plain = reuse;
+  plain.reuse_factorization = false;
+  for (const double from : {29.0, 10.0, 200.0}) {
+    Data a(m), b(m);
+    a.inputs(0) = from * kDeg;
+    ASSERT_TRUE(solve_position(m, a, 0.0).converged);  // factorised at `from`
+    a.q = b.q;                                          // the drawn pose at 30 deg as the guess
+    a.inputs(0) = b.inputs(0) = 31 * kDeg;
+    const PositionReport ra = solve_position(m, a, 0.0, reuse), rb = solve_position(m, b, 0.0, plain);
+    ASSERT_TRUE(ra.converged && rb.converged) << from;
+    EXPECT_LE((a.q - b.q).cwiseAbs().maxCoeff(), 1e-11) << from;
+    const auto [theta3, theta4] = testing::four_bar_closed_form(f, 31 * kDeg);
+    EXPECT_NEAR(a.q(5), theta3, 1e-10);
+    EXPECT_NEAR(a.q(8), theta4, 1e-10);
+    // The factorisation now belongs to the solution: velocities are exact.
+    ASSERT_TRUE(solve_velocity(m, a));
+    ASSERT_TRUE(solve_velocity(m, b));
+    EXPECT_LE((a.qd - b.qd).cwiseAbs().maxCoeff(), 1e-9) << from;
+  }
+}
+
+// With one moving driver Phi_t has a single non-zero row, so qd = omega dq/d(input).
+TEST(SolveVelocity, AlongTheInputSensitivityEqualsTheFullSolve) {
+  Model m = testing::four_bar({0.040, 0.120, 0.080, 0.100}, 50 * kDeg, Motion{2.5, -4.0});
+  Data data(m);
+  ASSERT_TRUE(solve_position(m, data, 0.3).converged);
+  ASSERT_TRUE(solve_velocity(m, data));
+  const Eigen::VectorXd qd = data.qd, gamma = data.gamma;
+  const Eigen::VectorXd dq = input_sensitivity(m, data, 0);
+  const double omega = 2.5 - 4.0 * 0.3;
+  ASSERT_TRUE(solve_velocity_along(m, data, dq, omega));
+  EXPECT_LE((data.qd - qd).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LE((data.gamma - gamma).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 }  // namespace

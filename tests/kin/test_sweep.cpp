@@ -116,5 +116,67 @@ TEST(Sweep, RejectsBadOptions) {
   EXPECT_THROW(sweep(m, data, o), std::invalid_argument);
 }
 
+// A fine sweep (0.1 deg, the benchmark's) against the closed form: positions, and velocities
+// and accelerations against central differences of the closed form in the input (unit input
+// speed, so d/dt = d/d theta2). Most samples converge from the predictor alone; none may lose
+// accuracy for it.
+TEST(Sweep, FineSweepMatchesTheClosedFormAndItsDerivatives) {
+  const testing::FourBarDims f{0.040, 0.120, 0.080, 0.100};
+  Model m = testing::four_bar(f, 0.0);
+  Data data(m);
+  SweepOptions o;
+  o.start = 0.0;
+  o.step = 0.1 * kDeg;
+  o.end = 359.9 * kDeg;
+  o.solver.tolerance = 1e-11;
+  const SweepResult r = sweep(m, data, o);
+  ASSERT_TRUE(r.complete) << r.message;
+  ASSERT_EQ(r.samples.size(), 3600u);
+  const double e = 1e-4;
+  for (std::size_t k = 0; k < r.samples.size(); k += 7) {
+    const SweepSample& s = r.samples[k];
+    const auto [t3, t4] = testing::four_bar_closed_form(f, s.input);
+    const auto [t3p, t4p] = testing::four_bar_closed_form(f, s.input + e);
+    const auto [t3m, t4m] = testing::four_bar_closed_form(f, s.input - e);
+    EXPECT_NEAR(std::remainder(s.q(5) - t3, 2 * M_PI), 0.0, 1e-9) << k;
+    EXPECT_NEAR(std::remainder(s.q(8) - t4, 2 * M_PI), 0.0, 1e-9) << k;
+    const auto d1 = [&](double p, double mi) { return std::remainder(p - mi, 2 * M_PI) / (2 * e); };
+    const auto d2 = [&](double p, double c, double mi) {
+      return (std::remainder(p - c, 2 * M_PI) - std::remainder(c - mi, 2 * M_PI)) / (e * e);
+    };
+    EXPECT_NEAR(s.qd(5), d1(t3p, t3m), 1e-7) << k;
+    EXPECT_NEAR(s.qd(8), d1(t4p, t4m), 1e-7) << k;
+    EXPECT_NEAR(s.qdd(5), d2(t3p, t3, t3m), 1e-5) << k;
+    EXPECT_NEAR(s.qdd(8), d2(t4p, t4, t4m), 1e-5) << k;
+  }
+}
+
+// A chain of 200 four-bars (1203 coordinates, the sparse path): every loop's rocker angle
+// follows from the previous one by the closed form, at every sample of the sweep.
+TEST(Sweep, ChainOfFourBarsFollowsTheClosedFormLoopByLoop) {
+  const testing::FourBarDims f{0.040, 0.120, 0.080, 0.100};
+  const int loops = 200;
+  Model m = testing::four_bar_chain(f, loops);
+  Data data(m);
+  ASSERT_TRUE(data.sparse);
+  SweepOptions o;
+  o.start = 0.0;
+  o.step = 2 * kDeg;
+  o.end = 30 * kDeg;
+  const SweepResult r = sweep(m, data, o);
+  ASSERT_TRUE(r.complete) << r.message;
+  ASSERT_EQ(r.samples.size(), 16u);
+  for (const SweepSample& s : r.samples) {
+    double crank = s.input;
+    for (int k = 0; k < loops; ++k) {
+      const auto [theta3, theta4] = testing::four_bar_closed_form(f, crank);
+      // Bodies: crank 0, then coupler 1 + 2k and rocker 2 + 2k.
+      ASSERT_NEAR(std::remainder(s.q(3 * (1 + 2 * k) + 2) - theta3, 2 * M_PI), 0.0, 1e-8) << "loop " << k;
+      ASSERT_NEAR(std::remainder(s.q(3 * (2 + 2 * k) + 2) - theta4, 2 * M_PI), 0.0, 1e-8) << "loop " << k;
+      crank = theta4;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gearkit::kin

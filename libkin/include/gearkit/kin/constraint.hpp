@@ -26,11 +26,26 @@ namespace gearkit::kin {
 inline constexpr int kGround = -1;
 
 /// Pose and velocity of one body, all SI: r [m], theta [rad], r_dot [m/s], omega [rad/s].
+/// The cosine and sine of theta are kept with it because every joint on the body needs them:
+/// the solver computes them once per body and evaluation. Change theta through set_theta().
 struct BodyState {
   Eigen::Vector2d r = Eigen::Vector2d::Zero();
   double theta = 0.0;
   Eigen::Vector2d r_dot = Eigen::Vector2d::Zero();
   double omega = 0.0;
+  double cos_theta = 1.0;  ///< cos(theta), kept by set_theta()
+  double sin_theta = 0.0;  ///< sin(theta), kept by set_theta()
+
+  /// Sets theta [rad] and its cached cosine and sine.
+  void set_theta(double angle) {
+    theta = angle;
+    cos_theta = std::cos(angle);
+    sin_theta = std::sin(angle);
+  }
+  /// A(theta) s: the body-fixed vector s' [m] expressed in the ground frame.
+  Eigen::Vector2d rotated(const Eigen::Vector2d& s) const {
+    return {cos_theta * s.x() - sin_theta * s.y(), sin_theta * s.x() + cos_theta * s.y()};
+  }
 };
 
 /// What a constraint is evaluated at.

@@ -5,12 +5,13 @@
 // so that a sweep does not allocate.
 #include <gearkit/kin/model.hpp>
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
 namespace gearkit::kin {
+
+class JacobianLU;  // the sparse LU of Phi_q (SuiteSparse KLU), private to libkin
 
 class Data {
  public:
@@ -30,33 +31,56 @@ class Data {
 
   Eigen::VectorXd phi, phi_t, gamma;  ///< assembled at (q, qd, t) by evaluate_constraints
 
-  /// True when the Jacobian is kept sparse (large models); otherwise dense.
+  /// Phi_q in compressed column storage. Its pattern is fixed by the model: every entry a
+  /// constraint can write is stored, even when its value is zero, so that the symbolic
+  /// analysis of the LU is done once.
+  Eigen::SparseMatrix<double> phi_q;
+
+  /// True for models above 64 coordinates, where rank tests (dof.hpp) use a sparse QR.
   bool sparse = false;
-  Eigen::MatrixXd phi_q_dense;                ///< valid when !sparse
-  Eigen::SparseMatrix<double> phi_q_sparse;   ///< valid when sparse
 
   /// State of the last factorisation of Phi_q (see factorize()).
   bool factored = false;
   bool singular = false;
   int determinant_sign = 0;  ///< sign of det(Phi_q) for square systems (0 if singular/unknown)
-  double rcond = 0.0;        ///< reciprocal condition estimate (dense square only; 1 otherwise)
+  /// Reciprocal condition estimate of Phi_q (square systems; 1 for redundant ones): the ratio
+  /// of the smallest to the largest LU pivot, or below 1e-4 the reciprocal of the 1-norm
+  /// condition estimate. Small values mean a dead point or toggle is near.
+  double rcond = 0.0;
 
-  /// Phi_q as a dense matrix (a copy when sparse).
+  /// Phi_q as a dense matrix (a copy).
   Eigen::MatrixXd jacobian() const;
 
   // Workspace (read by the solver; not part of the results).
+  std::vector<BodyState> body_states;  ///< per moving body at (q, qd), cos/sin of theta cached
+  /// Where one constraint's bodies, their states and its Jacobian block sit in the flat arrays
+  /// below (one allocation each for the whole model, so that large models stay in cache).
   struct Local {
-    std::vector<int> bodies;
-    std::vector<BodyState> states;
-    Eigen::VectorXd phi, phi_t, gamma;
-    Eigen::MatrixXd phi_q;
-    std::vector<int> value_index;  ///< sparse: position in valuePtr per (row, column), -1 for ground
+    int rows = 0;         ///< equations of the constraint
+    int first_slot = 0;   ///< first entry in local_bodies and local_states
+    int slots = 0;        ///< bodies listed by the constraint
+    int first_entry = 0;  ///< first entry of its block (rows x 3*slots, column-major) in
+                          ///< local_phi_q
+    int driver = -1;      ///< index in Model::drivers() for a driver, else -1
+    int first_scatter = 0;  ///< its first entry in `scatter`
+    int scatter_count = 0;  ///< entries of its block on moving bodies
+  };
+  /// Where an entry of a constraint's block (index from its first_entry) goes among Phi_q's
+  /// values.
+  struct Scatter {
+    int entry = 0;
+    int value = 0;
   };
   std::vector<Local> local;
-  Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu;
+  std::vector<int> local_bodies;
+  std::vector<BodyState> local_states;
+  std::vector<double> local_phi_q;
+  std::vector<Scatter> scatter;
+  /// True when some constraint lists a body twice, so that two block entries meet in one entry
+  /// of Phi_q: it is then zeroed and summed into; otherwise each entry is simply assigned.
+  bool sum_jacobian_entries = false;
+  std::unique_ptr<JacobianLU> lu;                        ///< for square systems
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> dense_qr;  ///< for redundant (non-square) systems
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparse_lu;
-  bool sparse_pattern_analysed = false;
   Eigen::VectorXd work;  ///< scratch of size coordinates()
   Eigen::VectorXd step;  ///< Newton step / right-hand side scratch
 };

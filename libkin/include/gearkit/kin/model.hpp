@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -118,6 +119,8 @@ class Model {
   }
   std::vector<Body> bodies_;
   std::vector<ModelConstraint> constraints_;
+  std::unordered_map<std::string, int> body_by_name_;        // name lookups stay O(1) for
+  std::unordered_map<std::string, int> constraint_by_name_;  // models of thousands of links
   std::vector<Driver> drivers_;
   std::vector<PointForce> forces_;
   std::vector<BodyTorque> torques_;

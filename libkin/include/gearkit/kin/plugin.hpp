@@ -19,8 +19,9 @@
 
 namespace gearkit::kin {
 
-/// Bumped whenever anything in plugin.hpp or element.hpp changes layout or meaning.
-inline constexpr int kPluginApiVersion = 1;
+/// Bumped whenever anything in plugin.hpp, element.hpp or constraint.hpp changes layout or
+/// meaning. 2: BodyState carries the cosine and sine of theta.
+inline constexpr int kPluginApiVersion = 2;
 
 struct PluginInfo {
   const char* name;     ///< short name, e.g. "gear"
