@@ -61,6 +61,28 @@ void BM_FourBarSweep_gearkit(benchmark::State& state) {
 }
 BENCHMARK(BM_FourBarSweep_gearkit)->Unit(benchmark::kMillisecond);
 
+// The same sweep into one SweepResult kept across sweeps (kin::sweep's second form): the
+// samples' storage is reused, so no allocation per position.
+void BM_FourBarSweepInto_gearkit(benchmark::State& state) {
+  const Model m = chain(1);
+  Data data(m);
+  SweepOptions o;
+  o.start = 0.0;
+  o.end = 2 * M_PI * (kPositions - 1) / kPositions;
+  o.step = 2 * M_PI / kPositions;
+  o.solver = parity_tolerance();
+  SweepResult r;
+  for (auto _ : state) {
+    sweep(m, data, o, r);
+    benchmark::DoNotOptimize(r.samples.back().qdd(8));
+  }
+  if (r.samples.size() != kPositions) state.SkipWithError("sweep did not complete");
+  state.SetItemsProcessed(state.iterations() * kPositions);
+  state.counters["ns_per_position"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * kPositions, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_FourBarSweepInto_gearkit)->Unit(benchmark::kMillisecond);
+
 #ifdef GEARKIT_HAVE_SLVS
 // SolveSpace: group 1 holds the workplane, the ground pivots and the crank end A (moved to the
 // crank angle before each solve); group 2 the free point B with |AB| = b and |O4 B| = c.

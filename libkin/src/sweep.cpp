@@ -136,10 +136,23 @@ PositionReport solve_at(const Model& model, Data& data, int driver, double value
 }
 
 SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
+  SweepResult result;
+  sweep(model, data, options, result);
+  return result;
+}
+
+void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result) {
   if (options.driver < 0 || options.driver >= static_cast<int>(model.drivers().size()))
     throw std::invalid_argument("sweep: driver index " + std::to_string(options.driver) + " out of range");
   if (!(options.step > 0.0)) throw std::invalid_argument("sweep: the step must be positive");
-  SweepResult result;
+  // The samples of `result` are overwritten in place (their vectors keep their storage), so a
+  // repeated sweep does not allocate per position.
+  std::size_t used = 0;
+  result.dead_points.clear();
+  result.extremes.clear();
+  result.assembled = false;
+  result.complete = false;
+  result.message.clear();
   const double direction = options.end >= options.start ? 1.0 : -1.0;
   const double step = options.step * direction;
   const long count = static_cast<long>(std::floor(std::abs(options.end - options.start) / options.step + 1e-9)) + 1;
@@ -147,7 +160,8 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
   PositionReport first = solve_at(model, data, options.driver, options.start, options.solver);
   if (!first.converged || first.singular) {
     result.message = first.message.empty() ? "singular Jacobian at the first input" : first.message;
-    return result;
+    result.samples.clear();
+    return;
   }
   result.assembled = true;
   Anchor current{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
@@ -155,8 +169,18 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
   Anchor before = current, previous = current, next = current;
   result.samples.reserve(static_cast<std::size_t>(std::min<long>(count, 1L << 20)));
   auto record = [&](const Anchor& a, int iterations) {
-    if (options.velocities) result.samples.push_back({a.input, a.q, a.qd, a.qdd, iterations});
-    else result.samples.push_back({a.input, a.q, {}, {}, iterations});
+    if (used == result.samples.size()) result.samples.emplace_back();
+    SweepSample& s = result.samples[used++];
+    s.input = a.input;
+    s.q = a.q;
+    s.iterations = iterations;
+    if (options.velocities) {
+      s.qd = a.qd;
+      s.qdd = a.qdd;
+    } else {
+      s.qd.resize(0);
+      s.qdd.resize(0);
+    }
   };
   record(current, first.iterations);
 
@@ -228,13 +252,13 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
                        "toggle or limit position)";
       result.dead_points.push_back(dp);
       result.message = "sweep stopped at a dead point";
-      if (result.samples.back().input != current.input) record(current, iterations);
+      if (result.samples[used - 1].input != current.input) record(current, iterations);
       break;
     }
     record(current, iterations);
   }
+  result.samples.resize(used);
   result.complete = result.dead_points.empty();
-  return result;
 }
 
 }  // namespace gearkit::kin

@@ -178,5 +178,37 @@ TEST(Sweep, ChainOfFourBarsFollowsTheClosedFormLoopByLoop) {
   }
 }
 
+// Sweeping into a kept result overwrites it exactly: a longer sweep, then a shorter one that
+// stops at a dead point, give the same samples as fresh sweeps.
+TEST(Sweep, IntoAKeptResultEqualsAFreshSweep) {
+  const testing::FourBarDims crank_rocker{0.040, 0.120, 0.080, 0.100}, triple{0.080, 0.090, 0.100, 0.120};
+  Model m1 = testing::four_bar(crank_rocker, 0.0), m2 = testing::four_bar(triple, 60 * kDeg);
+  SweepOptions o1, o2;
+  o1.end = 90 * kDeg;
+  o1.step = 1 * kDeg;
+  o2.start = 60 * kDeg;
+  o2.end = 180 * kDeg;
+  o2.step = 2 * kDeg;
+  SweepResult kept;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Model& m = pass == 0 ? m1 : m2;
+    const SweepOptions& o = pass == 0 ? o1 : o2;
+    Data fresh_data(m), kept_data(m);
+    const SweepResult fresh = sweep(m, fresh_data, o);
+    sweep(m, kept_data, o, kept);
+    ASSERT_EQ(kept.samples.size(), fresh.samples.size()) << pass;
+    EXPECT_EQ(kept.complete, fresh.complete);
+    EXPECT_EQ(kept.dead_points.size(), fresh.dead_points.size());
+    EXPECT_EQ(kept.message, fresh.message);
+    for (std::size_t k = 0; k < fresh.samples.size(); ++k) {
+      EXPECT_EQ(kept.samples[k].input, fresh.samples[k].input);
+      EXPECT_EQ(kept.samples[k].q, fresh.samples[k].q);
+      EXPECT_EQ(kept.samples[k].qd, fresh.samples[k].qd);
+      EXPECT_EQ(kept.samples[k].qdd, fresh.samples[k].qdd);
+    }
+  }
+  EXPECT_FALSE(kept.complete);  // the triple rocker stops at its toggle
+}
+
 }  // namespace
 }  // namespace gearkit::kin

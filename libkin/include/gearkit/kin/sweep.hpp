@@ -66,6 +66,10 @@ struct SweepResult {
 /// @throws std::invalid_argument for a bad driver index or step <= 0.
 SweepResult sweep(const Model& model, Data& data, const SweepOptions& options);
 
+/// The same into `result`, whose samples are overwritten in place: sweeping the same model
+/// again (an optimiser, an animation) then reuses their storage instead of allocating.
+void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result);
+
 /// Assembles at input `value` of driver `driver` (starting from data.q), then solves velocity
 /// and acceleration. @returns the position report; qd/qdd are valid only if it converged and
 /// the Jacobian is regular.
