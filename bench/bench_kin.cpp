@@ -40,14 +40,27 @@ SolverOptions parity_tolerance() {
   return o;
 }
 
-void BM_FourBarSweep_gearkit(benchmark::State& state) {
-  const Model m = chain(1);
-  Data data(m);
+// The benchmark sweep: kPositions crank angles over one turn, at the parity tolerance.
+SweepOptions full_turn() {
   SweepOptions o;
   o.start = 0.0;
   o.end = 2 * M_PI * (kPositions - 1) / kPositions;
   o.step = 2 * M_PI / kPositions;
   o.solver = parity_tolerance();
+  return o;
+}
+
+// Items and the ns_per_position counter for `positions` positions per iteration.
+void count_positions(benchmark::State& state, int positions) {
+  state.SetItemsProcessed(state.iterations() * positions);
+  state.counters["ns_per_position"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * positions, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_FourBarSweep_gearkit(benchmark::State& state) {
+  const Model m = chain(1);
+  Data data(m);
+  const SweepOptions o = full_turn();
   std::size_t samples = 0;
   for (auto _ : state) {
     const SweepResult r = sweep(m, data, o);
@@ -55,9 +68,7 @@ void BM_FourBarSweep_gearkit(benchmark::State& state) {
     benchmark::DoNotOptimize(r.samples.back().qdd(8));
   }
   if (samples != kPositions) state.SkipWithError("sweep did not complete");
-  state.SetItemsProcessed(state.iterations() * kPositions);
-  state.counters["ns_per_position"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kPositions, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  count_positions(state, kPositions);
 }
 BENCHMARK(BM_FourBarSweep_gearkit)->Unit(benchmark::kMillisecond);
 
@@ -66,20 +77,14 @@ BENCHMARK(BM_FourBarSweep_gearkit)->Unit(benchmark::kMillisecond);
 void BM_FourBarSweepInto_gearkit(benchmark::State& state) {
   const Model m = chain(1);
   Data data(m);
-  SweepOptions o;
-  o.start = 0.0;
-  o.end = 2 * M_PI * (kPositions - 1) / kPositions;
-  o.step = 2 * M_PI / kPositions;
-  o.solver = parity_tolerance();
+  const SweepOptions o = full_turn();
   SweepResult r;
   for (auto _ : state) {
     sweep(m, data, o, r);
     benchmark::DoNotOptimize(r.samples.back().qdd(8));
   }
   if (r.samples.size() != kPositions) state.SkipWithError("sweep did not complete");
-  state.SetItemsProcessed(state.iterations() * kPositions);
-  state.counters["ns_per_position"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kPositions, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  count_positions(state, kPositions);
 }
 BENCHMARK(BM_FourBarSweepInto_gearkit)->Unit(benchmark::kMillisecond);
 
@@ -136,9 +141,7 @@ void BM_FourBarSweep_slvs(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(param[11].val);
   }
-  state.SetItemsProcessed(state.iterations() * kPositions);
-  state.counters["ns_per_position"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kPositions, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  count_positions(state, kPositions);
 }
 BENCHMARK(BM_FourBarSweep_slvs)->Unit(benchmark::kMillisecond);
 #endif
@@ -162,10 +165,8 @@ void BM_FourBarChain(benchmark::State& state) {
     if (r.samples.size() != kSteps) state.SkipWithError("chain sweep did not complete");
     benchmark::DoNotOptimize(r.samples.back().qdd(0));
   }
-  state.SetItemsProcessed(state.iterations() * kSteps);
+  count_positions(state, kSteps);
   state.counters["coordinates"] = m.coordinates();
-  state.counters["ns_per_position"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * kSteps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_FourBarChain)->Arg(1)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 

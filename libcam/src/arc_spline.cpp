@@ -30,15 +30,14 @@ double Direction::x() const { return (reversed ? -1 : 1) * (1 - m * m) / (1 + m 
 double Direction::y() const { return (reversed ? -1 : 1) * 2 * m / (1 + m * m); }
 double Direction::angle() const { return wrap_pi(2 * std::atan(m) + (reversed ? pi : 0)); }
 
-namespace {
-
-/// Signed turning angle from direction a to direction b, in the sense of `sign` (+1 ccw, -1 cw).
-double turn(double ax, double ay, double bx, double by, double sign) {
+double turning_angle(double ax, double ay, double bx, double by, double sign) {
   double delta = std::atan2(ax * by - ay * bx, ax * bx + ay * by);
   if (sign > 0 && delta < 0) delta += 2 * pi;
   if (sign < 0 && delta > 0) delta -= 2 * pi;
   return delta;
 }
+
+namespace {
 
 /// The two pieces of a biarc (see add_biarc in offset_cgal.cpp for the equations), in doubles.
 void biarc_pieces(const Knot& a, const Knot& b, const Direction& joint, std::vector<Piece>& out) {
@@ -56,8 +55,8 @@ void biarc_pieces(const Knot& a, const Knot& b, const Direction& joint, std::vec
   const double cAx = a.x - RA * t0y, cAy = a.y + RA * t0x;
   const double mx = cAx + RA * wy, my = cAy - RA * wx;
   const double cBx = mx - RB * wy, cBy = my + RB * wx;
-  out.push_back({a.x, a.y, mx, my, cAx, cAy, RA, turn(t0x, t0y, wx, wy, RA)});
-  out.push_back({mx, my, b.x, b.y, cBx, cBy, RB, turn(wx, wy, t1x, t1y, RB)});
+  out.push_back({a.x, a.y, mx, my, cAx, cAy, RA, turning_angle(t0x, t0y, wx, wy, RA)});
+  out.push_back({mx, my, b.x, b.y, cBx, cBy, RB, turning_angle(wx, wy, t1x, t1y, RB)});
 }
 
 Knot knot_at(const std::function<CurvePoint(double)>& curve, double t) {

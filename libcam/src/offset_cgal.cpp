@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -123,11 +122,7 @@ Piece piece_of(Arrangement::Halfedge_const_handle he) {
   const bool along_curve = (he->direction() == CGAL::ARR_LEFT_TO_RIGHT) == cv.is_directed_right();
   const bool ccw = along_curve == (cv.orientation() == CGAL::COUNTERCLOCKWISE);
   p.radius = ccw ? r : -r;
-  const double ax = p.x0 - p.cx, ay = p.y0 - p.cy, bx = p.x1 - p.cx, by = p.y1 - p.cy;
-  double sweep = std::atan2(ax * by - ay * bx, ax * bx + ay * by);
-  if (ccw && sweep < 0) sweep += 2 * std::numbers::pi;
-  if (!ccw && sweep > 0) sweep -= 2 * std::numbers::pi;
-  p.sweep = sweep;
+  p.sweep = turning_angle(p.x0 - p.cx, p.y0 - p.cy, p.x1 - p.cx, p.y1 - p.cy, ccw ? 1.0 : -1.0);
   return p;
 }
 

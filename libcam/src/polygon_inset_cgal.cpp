@@ -12,7 +12,6 @@
 #include <cmath>
 #include <iterator>
 #include <list>
-#include <numbers>
 #include <string>
 
 namespace gearkit::cam {
@@ -36,11 +35,7 @@ Piece piece_of(const GpsTraits::X_monotone_curve_2& cv) {
   const double r = std::sqrt(CGAL::to_double(circle.squared_radius()));
   const bool ccw = cv.orientation() == CGAL::COUNTERCLOCKWISE;
   p.radius = ccw ? r : -r;
-  const double ax = p.x0 - p.cx, ay = p.y0 - p.cy, bx = p.x1 - p.cx, by = p.y1 - p.cy;
-  double sweep = std::atan2(ax * by - ay * bx, ax * bx + ay * by);
-  if (ccw && sweep < 0) sweep += 2 * std::numbers::pi;
-  if (!ccw && sweep > 0) sweep -= 2 * std::numbers::pi;
-  p.sweep = sweep;
+  p.sweep = turning_angle(p.x0 - p.cx, p.y0 - p.cy, p.x1 - p.cx, p.y1 - p.cy, ccw ? 1.0 : -1.0);
   return p;
 }
 

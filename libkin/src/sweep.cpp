@@ -67,9 +67,8 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
   // same multiple of dq = Phi_q^-1 e_row and needs no solve of its own.
   const int row = model.constraints()[static_cast<std::size_t>(model.drivers()[static_cast<std::size_t>(driver)].constraint)].first_row;
   const double input_speed = -data.phi_t(row);
-  data.phi_t(row) = 0.0;
-  const bool only_this_driver = data.phi_t.isZero(0.0);
-  data.phi_t(row) = -input_speed;
+  const bool only_this_driver =
+      data.phi_t.head(row).isZero(0.0) && data.phi_t.tail(data.phi_t.size() - row - 1).isZero(0.0);
   const bool solved = only_this_driver ? solve_velocity_along(model, data, to.dq, input_speed) : solve_velocity(model, data);
   if (solved && solve_acceleration(model, data)) {
     to.qd = data.qd;

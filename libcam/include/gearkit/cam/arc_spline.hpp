@@ -83,6 +83,11 @@ BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vect
 /// The arcs of a biarc spline (two per biarc, evaluated in double precision).
 std::vector<Piece> pieces_of(const BiarcSpline& spline);
 
+/// Signed angle [rad] turning vector a into vector b in the sense of `sign` (> 0
+/// counter-clockwise, < 0 clockwise), in (0, 2 pi] or [-2 pi, 0): the sweep of an arc from its
+/// centre's view of the start and end points, or between its end tangents.
+double turning_angle(double ax, double ay, double bx, double by, double sign);
+
 /// Distance from (x, y) to a piece.
 double distance_to_piece(const Piece& piece, double x, double y);
 
