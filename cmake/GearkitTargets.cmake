@@ -22,7 +22,8 @@ function(gearkit_add_library name)
   add_library(gearkit_${name} SHARED ${_src})
   add_library(gearkit::${name} ALIAS gearkit_${name})
   set_target_properties(gearkit_${name} PROPERTIES EXPORT_NAME ${name}
-                        VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+                        VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
+                        INSTALL_RPATH "$ORIGIN")  # the other gearkit libraries sit next to it
   target_include_directories(gearkit_${name} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
@@ -32,8 +33,8 @@ function(gearkit_add_library name)
 endfunction()
 
 # gearkit_add_plugin(<name> DEPS <deps...>)
-#   Builds plugins/<name>/*.cpp as the MODULE gearkit_plugin_<name>, placed next to the executable
-#   (bin/plugins) in the build tree and in lib/gearkit/plugins once installed.
+#   Builds plugins/<name>/*.cpp as the MODULE gearkit_plugin_<name>, placed in lib/gearkit/plugins
+#   of the build tree and of the install (where the executable looks, see default_plugin_locations).
 function(gearkit_add_plugin name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   file(GLOB _src CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
@@ -45,7 +46,7 @@ function(gearkit_add_plugin name)
   set_target_properties(gearkit_plugin_${name} PROPERTIES
     PREFIX "" OUTPUT_NAME "gearkit-${name}"
     LIBRARY_OUTPUT_DIRECTORY "${GEARKIT_PLUGIN_BUILD_DIR}"
-    INSTALL_RPATH "$ORIGIN/../..")
+    INSTALL_RPATH "$ORIGIN/../..")  # lib/gearkit/plugins -> lib
   target_link_libraries(gearkit_plugin_${name} PRIVATE gearkit::kin gearkit::io gearkit_build_flags ${ARG_DEPS})
   set_property(GLOBAL APPEND PROPERTY GEARKIT_PLUGINS gearkit_plugin_${name})
   install(TARGETS gearkit_plugin_${name} LIBRARY DESTINATION ${GEARKIT_PLUGIN_INSTALL_DIR})
