@@ -1,9 +1,9 @@
 #include "train_centre_distance.hpp"
 
+#include <gearkit/gear/cylindrical_gear.hpp>
 #include <gearkit/gear/gear_pair.hpp>
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace gearkit::plugins::train {
@@ -18,11 +18,13 @@ std::optional<double> working_centre_distance(const gt::Gear& a, const gt::Gear&
   const int z1 = g1.z;
   const int z2 = g2.kind == gt::GearKind::internal ? -g2.z : g2.z;
   if (z1 + z2 == 0) return std::nullopt;
-  const double alpha = 20.0 * std::numbers::pi / 180.0;
+  namespace gg = gearkit::gear;
+  const double alpha_n = g1.alpha_n, beta = g1.beta;
   try {
-    const double a_d = gearkit::gear::reference_center_distance(z1, z2, *a.module_mm);
-    const double alpha_w = gearkit::gear::working_pressure_angle(alpha, alpha, z1, z2, g1.x + g2.x);
-    return std::fabs(gearkit::gear::center_distance(a_d, alpha, alpha_w));
+    const double alpha_t = gg::transverse_pressure_angle(alpha_n, beta);
+    const double a_d = gg::reference_center_distance(z1, z2, gg::transverse_module(*a.module_mm, beta));
+    const double alpha_wt = gg::working_pressure_angle(alpha_t, alpha_n, z1, z2, g1.x + g2.x);
+    return std::fabs(gg::center_distance(a_d, alpha_t, alpha_wt));
   } catch (const std::domain_error&) {
     return std::nullopt;
   }

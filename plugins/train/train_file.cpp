@@ -54,7 +54,23 @@ void read_members(io::MapReader& root, gt::TrainDescription& d, std::vector<Fiel
   }
 }
 
+// What a gear without its own pressure or helix angle takes: the file's top-level
+// `pressure_angle` and `helix_angle`, else 20 deg and 0 (spur).
+struct GearDefaults {
+  double alpha_n = gt::standard_pressure_angle;
+  double beta = 0.0;
+};
+
+GearDefaults read_gear_defaults(io::MapReader& root) {
+  GearDefaults defaults;
+  defaults.alpha_n = root.quantity_or("pressure_angle", io::Quantity::angle, "deg", defaults.alpha_n);
+  defaults.beta = root.quantity_or("helix_angle", io::Quantity::angle, "deg", defaults.beta);
+  return defaults;
+}
+
 void read_gears(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldMarks>& marks) {
+  const GearDefaults defaults = read_gear_defaults(root);
+  const io::SourceMark root_alpha = root.mark("pressure_angle"), root_beta = root.mark("helix_angle");
   for (const YAML::Node& item : root.sequence("gears")) {
     io::MapReader r(item, root.file(), "gear");
     gt::GearSpec spec;
@@ -68,8 +84,14 @@ void read_gears(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldM
                                                                                       : gt::GearKind::external;
     if (const auto m = r.optional_quantity("module", io::Quantity::length, "mm")) spec.module_mm = *m * 1000.0;
     if (const auto x = r.optional_number("x")) spec.x = *x;
+    spec.alpha_n = r.quantity_or("pressure_angle", io::Quantity::angle, "deg", defaults.alpha_n);
+    spec.beta = r.quantity_or("helix_angle", io::Quantity::angle, "deg", defaults.beta);
     r.finish();
-    marks.push_back(marks_of(r, {"name", "member", "z", "module"}));
+    FieldMarks gear_marks = marks_of(r, {"name", "member", "z", "module"});
+    // A bad inherited angle is placed at the top-level key it came from.
+    gear_marks["pressure_angle"] = r.has("pressure_angle") ? r.mark("pressure_angle") : root_alpha;
+    gear_marks["helix_angle"] = r.has("helix_angle") ? r.mark("helix_angle") : root_beta;
+    marks.push_back(std::move(gear_marks));
     d.gears.push_back(spec);
   }
 }

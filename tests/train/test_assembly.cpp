@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 namespace gearkit::train {
 namespace {
 
@@ -95,6 +97,18 @@ TEST(Assembly, ReferenceCentreDistance) {
   EXPECT_DOUBLE_EQ(reference_centre_distance(a, b).value(), 135.0);
   b.module_mm = 5.0;
   EXPECT_FALSE(reference_centre_distance(a, b).has_value());
+}
+
+// Helical pair (ISO 21771): a = m_n (z1 + z2) / (2 cos beta) = 2 (20 + 40) / (2 cos 15 deg)
+// = 62.1166 mm.
+TEST(Assembly, HelicalReferenceCentreDistance) {
+  Gear a, b;
+  a.z = 20;
+  b.z = 40;
+  a.module_mm = b.module_mm = 2.0;
+  a.beta = 15.0 * std::numbers::pi / 180.0;
+  b.beta = -a.beta;
+  EXPECT_NEAR(reference_centre_distance(a, b).value(), 62.1166, 5e-5);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 namespace gearkit::train {
 namespace {
 
@@ -20,6 +22,28 @@ void expect_error(const TrainDescription& d, ModelError::Item item, std::size_t 
     EXPECT_EQ(e.index(), index);
     EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
   }
+}
+
+TEST(Model, PressureAndHelixAngles) {
+  const double deg = std::numbers::pi / 180.0;
+  TrainDescription d = simple_planetary(24, 18, 60);
+  EXPECT_DOUBLE_EQ(make_train_model(d).gear(0).alpha_n, 20.0 * deg);  // the documented default
+  d.gears[0].alpha_n = 45.0 * deg;
+  expect_error(d, ModelError::Item::gear, 0, "pressure angle in (0, 45) deg");
+  d.gears[0].alpha_n = 25.0 * deg;
+  expect_error(d, ModelError::Item::mesh, 0, "pressure angles 25 deg and 20 deg");
+  for (auto& g : d.gears) g.alpha_n = 25.0 * deg;
+  EXPECT_NO_THROW(make_train_model(d));
+  // External sun-planet: opposite hands; internal planet-ring: the same hand.
+  d.gears[0].beta = 20.0 * deg;
+  d.gears[1].beta = -20.0 * deg;
+  expect_error(d, ModelError::Item::mesh, 1, "same helix angle (same hand)");
+  d.gears[2].beta = -20.0 * deg;
+  EXPECT_NO_THROW(make_train_model(d));
+  d.gears[1].beta = 20.0 * deg;
+  expect_error(d, ModelError::Item::mesh, 0, "opposite helix angles");
+  d.gears[1].beta = -50.0 * deg;
+  expect_error(d, ModelError::Item::gear, 1, "helix angle in (-45, 45) deg");
 }
 
 TEST(Model, BuildsAndResolvesNames) {

@@ -143,6 +143,55 @@ TEST(TrainCli, LjubljanaPlanetaryWithProfileShift) {
   EXPECT_TRUE(j["warnings"].empty()) << j["warnings"];
 }
 
+// The coaxiality check takes the pressure angle from the file. Sun z = 20 (x = 0.3) with planet
+// z = 16 (x = 0), m = 2 mm, alpha = 25 deg (ISO 21771): a_d = 2 (20 + 16)/2 = 36 mm,
+// inv alpha_w = inv 25 deg + 2 tan 25 deg 0.3/36 -> alpha_w = 26.8803 deg,
+// a = 36 cos 25 deg / cos alpha_w = 36.5794 mm (at 20 deg it would be 36.5679 mm).
+TEST(TrainCli, CentreDistanceUsesTheFilesPressureAngle) {
+  const std::string model =
+      "members: [sun, carrier, {name: planet, carried_by: carrier}, ring]\n"
+      "gears:\n  - {name: s, member: sun, z: 20, module: 2, x: 0.3}\n  - {name: p, member: planet, z: 16, module: 2}\n"
+      "  - {name: r, member: ring, z: 52, type: internal, module: 2}\n"
+      "meshes:\n  - {gears: [s, p], carrier: carrier}\n  - {gears: [p, r], carrier: carrier}\n"
+      "analysis: {fix: [ring], input: sun = 100 rpm, output: carrier}\n";
+  const CliRun run = gearkit("train " + write_yaml("alpha25.yaml", "pressure_angle: 25 deg\n" + model) + " --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  std::string detail;
+  for (const auto& check : j["assembly"])
+    if (check["condition"] == "coaxiality") detail = check["detail"].get<std::string>();
+  EXPECT_NE(detail.find("a(s-p) = 36.5794"), std::string::npos) << detail;
+  // Without the key the documented default, 20 deg, applies.
+  const CliRun standard = gearkit("train " + write_yaml("alpha20.yaml", model) + " --format json");
+  ASSERT_EQ(standard.status, 0) << standard.err;
+  EXPECT_NE(standard.out.find("a(s-p) = 36.5679"), std::string::npos) << standard.out;
+}
+
+// A helical planetary: m_n = 2 mm, beta = 15 deg, sun 20, planet 16, ring 52, no shift. The
+// reference centre distance is a = m_n (z_s + z_p)/(2 cos beta) = 36/cos 15 deg = 37.2699 mm for
+// both meshes (ISO 21771), not the spur value 36 mm. Sun right-hand, planet and ring left-hand.
+TEST(TrainCli, HelicalPlanetaryCentreDistance) {
+  const CliRun run = gearkit(
+      "train " +
+      write_yaml("helical.yaml",
+                 "helix_angle: -15 deg\nmembers: [sun, carrier, {name: planet, carried_by: carrier, count: 3}, ring]\n"
+                 "gears:\n  - {name: s, member: sun, z: 20, module: 2, helix_angle: 15 deg}\n"
+                 "  - {name: p, member: planet, z: 16, module: 2}\n"
+                 "  - {name: r, member: ring, z: 52, type: internal, module: 2}\n"
+                 "meshes:\n  - {gears: [s, p], carrier: carrier}\n  - {gears: [p, r], carrier: carrier}\n"
+                 "analysis: {fix: [ring], input: sun = 100 rpm, output: carrier}\n") +
+      " --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  bool coaxial = false;
+  for (const auto& check : j["assembly"])
+    if (check["condition"] == "coaxiality") {
+      coaxial = check["checked"].get<bool>() && check["satisfied"].get<bool>();
+      EXPECT_NE(check["detail"].get<std::string>().find("a(s-p) = 37.2699"), std::string::npos) << check["detail"];
+    }
+  EXPECT_TRUE(coaxial);
+}
+
 TEST(TrainCli, UnderDeterminedIsAWarning) {
   const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100 --format json");
   ASSERT_EQ(run.status, 0) << run.err;
@@ -232,6 +281,16 @@ INSTANTIATE_TEST_SUITE_P(
                  "typo_key.yaml:3:", "unknown key 'modul'"},
         BadModel{"wrong_type.yaml", "members: [a]\ngears:\n  - {name: g1, member: a, z: twelve}\nmeshes: []\n",
                  "wrong_type.yaml:3:", "whole number"},
+        BadModel{"mixed_pressure_angles.yaml",
+                 "pressure_angle: 25 deg\nmembers: [a, b]\ngears:\n  - {name: g1, member: a, z: 20}\n"
+                 "  - {name: g2, member: b, z: 30, pressure_angle: 20}\nmeshes:\n  - {gears: [g1, g2]}\n",
+                 "mixed_pressure_angles.yaml:7:", "pressure angles 25 deg and 20 deg"},
+        BadModel{"same_hand_external.yaml",
+                 "members: [a, b]\ngears:\n  - {name: g1, member: a, z: 20, helix_angle: 15}\n"
+                 "  - {name: g2, member: b, z: 30, helix_angle: 15}\nmeshes:\n  - {gears: [g1, g2]}\n",
+                 "same_hand_external.yaml:6:", "opposite helix angles"},
+        BadModel{"pressure_angle_range.yaml", "pressure_angle: 50 deg\nmembers: [a]\ngears:\n  - {name: g1, member: a, z: 20}\nmeshes: []\n",
+                 "pressure_angle_range.yaml:1:", "pressure angle in (0, 45) deg"},
         BadModel{"bad_type_choice.yaml",
                  "members: [a]\ngears:\n  - {name: g1, member: a, z: 20, type: inner}\nmeshes: []\n",
                  "bad_type_choice.yaml:3:", "external, internal"}));

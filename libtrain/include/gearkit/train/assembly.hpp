@@ -7,7 +7,8 @@
 //    i0 = (w_B - w_c)/(w_A - w_c) the basic ratio through the planet,
 //      (1 - i0) z_B z_p1 / (N gcd(z_p1, z_p2))  must be an integer
 //    (for a simple planet p1 = p2 this is the familiar (z_s + z_r)/N integer);
-//  - neighbour clearance: 2 a sin(pi/N) > tip diameter of the largest planet gear.
+//  - neighbour clearance: 2 a sin(pi/N) > tip diameter of the largest planet gear,
+//    d_a = m_n z / cos(beta) + 2 m_n (1 + x).
 // Lengths are in mm when modules are given; with no module anywhere in a planet set a common
 // module is assumed and lengths are in modules.
 #include <gearkit/train/model.hpp>
@@ -22,7 +23,8 @@ namespace gearkit::train {
 /// Working centre distance [mm] of two meshing gears, or nullopt when it cannot be computed.
 using CentreDistanceFunction = std::function<std::optional<double>(const Gear& a, const Gear& b)>;
 
-/// a = m (z_a + z_b)/2 for an external pair, m (z_int - z_ext)/2 with an internal gear [mm].
+/// a = m_n (z_a + z_b)/(2 cos beta) for an external pair, m_n (z_int - z_ext)/(2 cos beta) with an
+/// internal gear [mm] (ISO 21771 reference centre distance; beta the helix angle of gear a).
 /// nullopt when a module is missing, the modules differ, or a profile shift is not zero (then the
 /// working centre distance depends on the shifts: pass a function that computes it).
 std::optional<double> reference_centre_distance(const Gear& a, const Gear& b);

@@ -26,13 +26,21 @@ struct Member {
 
 enum class GearKind { external, internal };
 
+/// The standard normal pressure angle alpha_n = 20 deg (ISO 53 basic rack) [rad]: what a gear
+/// without its own pressure angle has.
+inline constexpr double standard_pressure_angle = 0.3490658503988659;
+
 struct Gear {
   std::string name;
   MemberId member = ground;
   int z = 0;                             ///< number of teeth
   GearKind kind = GearKind::external;
-  std::optional<double> module_mm;       ///< normal module m [mm], only for assembly checks
+  std::optional<double> module_mm;       ///< normal module m_n [mm], only for assembly checks
   double x = 0.0;                        ///< profile shift coefficient (ISO 21771), assembly checks
+  double alpha_n = standard_pressure_angle;  ///< normal pressure angle [rad], in (0, 45 deg)
+  /// Helix angle at the reference circle [rad], |beta| < 45 deg: positive for a right-hand
+  /// helix, negative for a left-hand one, 0 for a spur gear (ISO 21771).
+  double beta = 0.0;
 };
 
 struct Mesh {
@@ -56,6 +64,8 @@ struct GearSpec {
   GearKind kind = GearKind::external;
   std::optional<double> module_mm;
   double x = 0.0;
+  double alpha_n = standard_pressure_angle;  ///< [rad]
+  double beta = 0.0;                         ///< [rad], signed as in Gear
 };
 struct MeshSpec {
   std::string name;  ///< may be empty: then "<gear_a>-<gear_b>"
@@ -115,11 +125,14 @@ class TrainModel {
 /// Resolves names and checks the description.
 /// @throws ModelError for: an empty or repeated name, a member called "ground", a member carried
 ///   by an unknown member, by itself or by a planet of a planet chain that loops; planet_count < 1;
-///   a gear on an unknown member; z <= 0; module <= 0; a mesh naming an unknown gear, the same gear
+///   a gear on an unknown member; z <= 0; module <= 0; a pressure angle outside (0, 45 deg); a
+///   helix angle with |beta| >= 45 deg; a mesh naming an unknown gear, the same gear
 ///   twice, two gears on the same member, two internal gears, an unknown carrier; a mesh whose
 ///   gears are not both held by its carrier (each gear must sit on a planet of that carrier or on a
 ///   member coaxial with it, and at least one on a planet; on ground both sit on fixed axes);
-///   an efficiency outside (0, 1].
+///   an efficiency outside (0, 1]; a mesh of gears with different pressure angles, or helix
+///   angles that cannot mesh on parallel axes (an external pair needs opposite hands, beta_a =
+///   -beta_b; an internal pair the same hand, beta_a = beta_b).
 TrainModel make_train_model(const TrainDescription& description);
 
 }  // namespace gearkit::train
