@@ -67,7 +67,7 @@ void BM_GearPairTableGivenCentreDistanceBalanced(benchmark::State& state) {
   in.z1 = 12;
   in.z2 = 24;
   in.module = 3.0;
-  in.center_distance = 56.5;
+  in.centre_distance = 56.5;
   in.split = gg::ShiftSplit::balanced_sliding;
   for (auto _ : state) benchmark::DoNotOptimize(gg::compute_gear_pair(in));
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));

@@ -34,14 +34,14 @@ const char* to_string(ShiftSplit split) {
   return "user";
 }
 
-double reference_center_distance(int z1, int z2, double m_t) { return 0.5 * m_t * (z1 + z2); }
+double reference_centre_distance(int z1, int z2, double m_t) { return 0.5 * m_t * (z1 + z2); }
 
 double working_pressure_angle(double alpha_t, double alpha_n, int z1, int z2, double sum_x) {
   const double inv_wt = involute(alpha_t) + 2.0 * std::tan(alpha_n) * sum_x / (z1 + z2);
   return inverse_involute(inv_wt);
 }
 
-double working_pressure_angle_for_center_distance(double a_d, double alpha_t, double a) {
+double working_pressure_angle_for_centre_distance(double a_d, double alpha_t, double a) {
   const double c = a_d * std::cos(alpha_t) / a;
   if (!(c > 0.0 && c <= 1.0)) {
     throw std::domain_error(fmt::format("centre distance {:.6g} mm is below the sum of the base radii {:.6g} mm",
@@ -50,13 +50,13 @@ double working_pressure_angle_for_center_distance(double a_d, double alpha_t, do
   return std::acos(c);
 }
 
-double center_distance(double a_d, double alpha_t, double alpha_wt) { return a_d * std::cos(alpha_t) / std::cos(alpha_wt); }
+double centre_distance(double a_d, double alpha_t, double alpha_wt) { return a_d * std::cos(alpha_t) / std::cos(alpha_wt); }
 
 double sum_of_shifts(int z1, int z2, double alpha_t, double alpha_n, double alpha_wt) {
   return (z1 + z2) * (involute(alpha_wt) - involute(alpha_t)) / (2.0 * std::tan(alpha_n));
 }
 
-double center_distance_modification(double a, double a_d, double m_n) { return (a - a_d) / m_n; }
+double centre_distance_modification(double a, double a_d, double m_n) { return (a - a_d) / m_n; }
 
 double tip_shortening(double sum_x, double y) { return sum_x - y; }
 
@@ -99,7 +99,7 @@ double max_specific_sliding(int z_i, int z_j, double d_bj, double d_aj, double a
   return 1.0 - (rho_j_tip / rho_i_root) * (static_cast<double>(z_i) / z_j);
 }
 
-double teeth_sum_for_center_distance(double a, double m_n, double beta) { return 2.0 * a * std::cos(beta) / m_n; }
+double teeth_sum_for_centre_distance(double a, double m_n, double beta) { return 2.0 * a * std::cos(beta) / m_n; }
 
 namespace {
 
@@ -161,7 +161,7 @@ Basics basics_of(const GearPairInput& in) {
   b.d2 = reference_diameter(b.Z2, b.m_n, b.beta);
   b.d_b1 = base_diameter(b.d1, b.alpha_t);
   b.d_b2 = base_diameter(b.d2, b.alpha_t);
-  b.a_d = reference_center_distance(b.Z1, b.Z2, b.m_t);
+  b.a_d = reference_centre_distance(b.Z1, b.Z2, b.m_t);
   return b;
 }
 
@@ -262,7 +262,7 @@ GearPairResult compute_gear_pair(const GearPairInput& in) {
   } catch (const GeometryError&) {
     throw;
   } catch (const std::domain_error& e) {
-    throw GeometryError(in.center_distance ? "center_distance" : "x1",
+    throw GeometryError(in.centre_distance ? "centre_distance" : "x1",
                         fmt::format("the pair has no valid geometry with these data: {}", e.what()));
   }
 }
@@ -278,19 +278,19 @@ GearPairResult compute_checked(const GearPairInput& in) {
   // Working pressure angle, centre distance and shifts.
   double x1 = in.x1, x2 = in.x2, a = 0, alpha_wt = 0;
   const double x_thin = -std::numbers::pi / (4.0 * b.tan_alpha_n);  // s = 0 at the reference circle
-  if (in.center_distance) {
-    const double a_in = *in.center_distance;
-    require(std::isfinite(a_in) && a_in > 0.0, "center_distance", [&] { return fmt::format("expected a centre distance > 0 mm, found {}", a_in); });
+  if (in.centre_distance) {
+    const double a_in = *in.centre_distance;
+    require(std::isfinite(a_in) && a_in > 0.0, "centre_distance", [&] { return fmt::format("expected a centre distance > 0 mm, found {}", a_in); });
     a = sign * a_in;
     try {
-      alpha_wt = working_pressure_angle_for_center_distance(b.a_d, b.alpha_t, a);
+      alpha_wt = working_pressure_angle_for_centre_distance(b.a_d, b.alpha_t, a);
     } catch (const std::domain_error&) {
-      throw GeometryError("center_distance",
+      throw GeometryError("centre_distance",
                           fmt::format("the pair cannot reach {:.4f} mm: the centre distance must be at least {:.4f} mm ({} of the base radii)",
                                       a_in, std::fabs(b.a_d * std::cos(b.alpha_t)), in.internal ? "difference" : "sum"));
     }
     p.sum_x = sum_of_shifts(b.Z1, b.Z2, b.alpha_t, b.alpha_n, alpha_wt);
-    const double y = center_distance_modification(a, b.a_d, b.m_n);
+    const double y = centre_distance_modification(a, b.a_d, b.m_n);
     const double k = std::max(0.0, tip_shortening(p.sum_x, y));
     const double k_used = in.apply_tip_shortening ? k : 0.0;
     p.split = in.split;
@@ -312,15 +312,15 @@ GearPairResult compute_checked(const GearPairInput& in) {
     if (!in.internal && (full_tip_thickness(b, 0, x1) <= 0.0 || full_tip_thickness(b, 1, x2) <= 0.0)) {
       const double limit = pointed_shift(b, 0) + pointed_shift(b, 1);
       if (p.sum_x > limit) {
-        throw GeometryError("center_distance",
+        throw GeometryError("centre_distance",
                             fmt::format("the pair cannot reach {:.4f} mm: it needs x1 + x2 = {:.4f}, but the teeth become "
                                         "pointed beyond x1 + x2 = {:.4f} (at most {:.4f} mm)",
-                                        a_in, p.sum_x, limit, std::fabs(center_distance(b.a_d, b.alpha_t,
+                                        a_in, p.sum_x, limit, std::fabs(centre_distance(b.a_d, b.alpha_t,
                                             working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, limit)))));
       }
     }
     if (x1 <= x_thin || x2 <= x_thin) {
-      throw GeometryError("center_distance",
+      throw GeometryError("centre_distance",
                           fmt::format("the pair cannot reach {:.4f} mm: the shift split x1 = {:.4f}, x2 = {:.4f} leaves no tooth at "
                                       "the reference circle",
                                       a_in, x1, x2));
@@ -337,13 +337,13 @@ GearPairResult compute_checked(const GearPairInput& in) {
                                             "angle below zero (the base circles would overlap)",
                                             p.sum_x));
     }
-    a = center_distance(b.a_d, b.alpha_t, alpha_wt);
+    a = centre_distance(b.a_d, b.alpha_t, alpha_wt);
   }
 
   p.alpha_wt = alpha_wt;
   p.a = std::fabs(a);
   p.a_d = std::fabs(b.a_d);
-  p.y = center_distance_modification(a, b.a_d, b.m_n);
+  p.y = centre_distance_modification(a, b.a_d, b.m_n);
   p.k = tip_shortening(p.sum_x, p.y);
   p.tip_shortened = in.apply_tip_shortening && p.k > 1e-12;
   const double k_used = p.tip_shortened ? p.k : 0.0;

@@ -21,9 +21,21 @@ namespace {
 
 constexpr std::string_view kUsage =
     "gearkit gear --z1 N --z2 N --module LEN [--pressure-angle 20] [--helix-angle 0] "
-    "[--x1 X --x2 X | --center-distance LEN [--x1 X | --split balanced|proportional]] [--internal] [--transverse] "
-    "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--center-distance-deviation LEN] "
+    "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional]] [--internal] [--transverse] "
+    "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
     "[--pin-diameter LEN] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] [--draw pair|gear1|gear2]";
+
+// gearkit 0.1 spelled two options the American way; the old names stay accepted for one release
+// (docs/gear.md) and are read as the new ones.
+std::vector<std::string> with_centre_spelling(std::vector<std::string> args) {
+  for (std::string& a : args)
+    for (std::string_view old : {"--center-distance-deviation", "--center-distance"})
+      if (a.starts_with(old) && (a.size() == old.size() || a[old.size()] == '=')) {
+        a.replace(0, std::string_view("--center-").size(), "--centre-");
+        break;
+      }
+  return args;
+}
 
 }  // namespace
 
@@ -33,7 +45,7 @@ int run_gear_command(kin::CommandContext& context) {
   io::add_common_options(desc);
   io::po::positional_options_description none;
   io::po::variables_map vm;
-  if (!io::parse_command_line(context.args, desc, none, vm, kUsage, context.out)) return 0;
+  if (!io::parse_command_line(with_centre_spelling(context.args), desc, none, vm, kUsage, context.out)) return 0;
   const GearCommandOptions options = read_gear_options(vm);
   const io::CommonOptions common = io::common_options(vm);
 

@@ -73,10 +73,10 @@ void add_gear_options(io::po::options_description& desc) {
       ("helix-angle", po::value<std::string>()->value_name("ANGLE"), "helix angle, deg (default 0: spur)")
       ("x1", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 1 (default 0)")
       ("x2", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 2 (default 0; ISO sign for a ring)")
-      ("center-distance", po::value<std::string>()->value_name("LEN"),
+      ("centre-distance", po::value<std::string>()->value_name("LEN"),
        "working centre distance, mm: the shift sum follows from it (with --x1: x2 = sum - x1)")
       ("split", po::value<std::string>()->value_name("balanced|proportional|user"),
-       "split of the shift sum with --center-distance (default balanced specific sliding; user with --x1)")
+       "split of the shift sum with --centre-distance (default balanced specific sliding; user with --x1)")
       ("internal", po::bool_switch(), "gear 2 is an internal gear (ring); z2 > z1")
       ("transverse", po::bool_switch(), "module and pressure angle are given in the transverse section")
       ("no-tip-shortening", po::bool_switch(), "keep d_a = d + 2 m (h_aP + x) even when k > 0")
@@ -87,7 +87,7 @@ void add_gear_options(io::po::options_description& desc) {
       ("backlash", po::value<std::string>()->value_name("LEN"), "target normal backlash j_bn, mm: sets equal thickness allowances")
       ("allowance1", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn1, mm (negative: thinner)")
       ("allowance2", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn2, mm (negative: thinner)")
-      ("center-distance-deviation", po::value<std::string>()->value_name("LEN"), "centre distance deviation A_a, mm")
+      ("centre-distance-deviation", po::value<std::string>()->value_name("LEN"), "centre distance deviation A_a, mm")
       ("pin-diameter", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for both gears, mm")
       ("pin-diameter1", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 1, mm")
       ("pin-diameter2", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 2, mm")
@@ -131,18 +131,18 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
   }
   if (!(in.rho_fP >= 0.0)) fail("root-radius", fmt::format("expected a coefficient >= 0, found {}", in.rho_fP));
 
-  exclusive(vm, "center-distance", "x2", "x2 follows from the centre distance (give --x1 to fix the split)");
+  exclusive(vm, "centre-distance", "x2", "x2 follows from the centre distance (give --x1 to fix the split)");
   if (given(vm, "x1")) in.x1 = number(vm, "x1");
   if (given(vm, "x2")) in.x2 = number(vm, "x2");
-  if (given(vm, "center-distance")) {
-    in.center_distance = length_mm(vm, "center-distance");
-    if (!(*in.center_distance > 0.0)) {
-      fail("center-distance", fmt::format("expected a centre distance > 0 mm, found {} mm", *in.center_distance));
+  if (given(vm, "centre-distance")) {
+    in.centre_distance = length_mm(vm, "centre-distance");
+    if (!(*in.centre_distance > 0.0)) {
+      fail("centre-distance", fmt::format("expected a centre distance > 0 mm, found {} mm", *in.centre_distance));
     }
     in.split = given(vm, "x1") ? gg::ShiftSplit::user_x1 : gg::ShiftSplit::balanced_sliding;
   }
   if (given(vm, "split")) {
-    if (!in.center_distance) fail("split", "only applies with --center-distance");
+    if (!in.centre_distance) fail("split", "only applies with --centre-distance");
     const std::string s = text_of(vm, "split");
     const std::map<std::string, gg::ShiftSplit> splits = {
         {"balanced", gg::ShiftSplit::balanced_sliding}, {"proportional", gg::ShiftSplit::proportional}, {"user", gg::ShiftSplit::user_x1}};
@@ -169,7 +169,7 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
   }
   if (given(vm, "allowance1")) in.A_sn1 = length_mm(vm, "allowance1");
   if (given(vm, "allowance2")) in.A_sn2 = length_mm(vm, "allowance2");
-  if (given(vm, "center-distance-deviation")) in.A_a = length_mm(vm, "center-distance-deviation");
+  if (given(vm, "centre-distance-deviation")) in.A_a = length_mm(vm, "centre-distance-deviation");
 
   exclusive(vm, "pin-diameter", "pin-diameter1", "--pin-diameter already sets both gears");
   exclusive(vm, "pin-diameter", "pin-diameter2", "--pin-diameter already sets both gears");
@@ -198,7 +198,7 @@ std::string option_for_field(const std::string& field) {
   static const std::map<std::string, std::string> options = {
       {"z1", "z1"}, {"z2", "z2"}, {"module", "module"}, {"pressure_angle", "pressure-angle"},
       {"helix_angle", "helix-angle"}, {"face_width", "face-width"}, {"x1", "x1"}, {"x2", "x2"},
-      {"center_distance", "center-distance"}, {"backlash_target", "backlash"}, {"A_a", "center-distance-deviation"},
+      {"centre_distance", "centre-distance"}, {"backlash_target", "backlash"}, {"A_a", "centre-distance-deviation"},
       {"pin_diameter1", "pin-diameter1"}, {"pin_diameter2", "pin-diameter2"}, {"rack", "root-radius"}};
   const auto it = options.find(field);
   return it == options.end() ? field : it->second;

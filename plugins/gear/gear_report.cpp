@@ -142,10 +142,10 @@ nlohmann::json gear_json(const gg::GearResult& g) {
 }
 
 nlohmann::json pair_json(const gg::PairResult& p, bool internal) {
-  return {{"internal", internal},
+  nlohmann::json j = {{"internal", internal},
           {"alpha_wt_deg", p.alpha_wt * kDeg},
-          {"center_distance_mm", p.a},
-          {"reference_center_distance_mm", p.a_d},
+          {"centre_distance_mm", p.a},
+          {"reference_centre_distance_mm", p.a_d},
           {"y", p.y},
           {"k", p.k},
           {"tip_shortening_applied", p.tip_shortened},
@@ -158,9 +158,14 @@ nlohmann::json pair_json(const gg::PairResult& p, bool internal) {
           {"contact_ratio_total", p.eps_gamma},
           {"tip_clearance_mm", {p.c1, p.c2}},
           {"specific_sliding_max", {jnum(p.zeta1), jnum(p.zeta2)}},
-          {"center_distance_deviation_mm", p.A_a},
+          {"centre_distance_deviation_mm", p.A_a},
           {"backlash_circumferential_mm", p.j_wt},
           {"backlash_normal_mm", p.j_bn}};
+  // The American spellings of gearkit 0.1, kept as aliases for one release (docs/gear.md).
+  j["center_distance_mm"] = p.a;
+  j["reference_center_distance_mm"] = p.a_d;
+  j["center_distance_deviation_mm"] = p.A_a;
+  return j;
 }
 
 io::Polyline to_polyline(const std::vector<gg::ProfileVertex>& outline, std::string layer) {

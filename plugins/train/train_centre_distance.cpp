@@ -22,9 +22,9 @@ std::optional<double> working_centre_distance(const gt::Gear& a, const gt::Gear&
   const double alpha_n = g1.alpha_n, beta = g1.beta;
   try {
     const double alpha_t = gg::transverse_pressure_angle(alpha_n, beta);
-    const double a_d = gg::reference_center_distance(z1, z2, gg::transverse_module(*a.module_mm, beta));
+    const double a_d = gg::reference_centre_distance(z1, z2, gg::transverse_module(*a.module_mm, beta));
     const double alpha_wt = gg::working_pressure_angle(alpha_t, alpha_n, z1, z2, g1.x + g2.x);
-    return std::fabs(gg::center_distance(a_d, alpha_t, alpha_wt));
+    return std::fabs(gg::centre_distance(a_d, alpha_t, alpha_wt));
   } catch (const std::domain_error&) {
     return std::nullopt;
   }

@@ -31,7 +31,7 @@ gg::BacklashInput nominal(int z1, int z2, double m_n, double beta, double x1, do
   in.s_t1 = gg::reference_tooth_thickness(m_t, x1, a_n);
   in.s_t2 = gg::reference_tooth_thickness(m_t, x2, a_n);
   const double a_wt = gg::working_pressure_angle(a_t, a_n, z1, z2, x1 + x2);
-  in.a = gg::center_distance(gg::reference_center_distance(z1, z2, m_t), a_t, a_wt);
+  in.a = gg::centre_distance(gg::reference_centre_distance(z1, z2, m_t), a_t, a_wt);
   return in;
 }
 

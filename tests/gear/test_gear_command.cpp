@@ -51,7 +51,7 @@ TEST(GearCommand, JsonHasTheDocumentedKeys) {
   const CliRun r = run("--z1 12 --z2 24 --module 3 --x1 0.6 --x2 0.36 --face-width 20 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"alpha_wt_deg", "center_distance_mm", "y", "k", "sum_x", "mounting", "contact_ratio_alpha",
+  for (const char* key : {"alpha_wt_deg", "centre_distance_mm", "y", "k", "sum_x", "mounting", "contact_ratio_alpha",
                           "contact_ratio_beta", "tip_clearance_mm", "backlash_circumferential_mm", "backlash_normal_mm"}) {
     EXPECT_TRUE(j["pair"].contains(key)) << key;
   }
@@ -65,14 +65,27 @@ TEST(GearCommand, JsonHasTheDocumentedKeys) {
   }
   EXPECT_TRUE(j.contains("warnings"));
   // Values of the KHK example (bolsover.com reproduction): a = 56.500, d_a1 = 44.840.
-  EXPECT_NEAR(j["pair"]["center_distance_mm"].template get<double>(), 56.5, 5e-4);
+  EXPECT_NEAR(j["pair"]["centre_distance_mm"].template get<double>(), 56.5, 5e-4);
   EXPECT_NEAR(j["gears"][0]["d_a_mm"].template get<double>(), 44.840, 5e-4);
   EXPECT_EQ(j["pair"]["mounting"], "V");
 }
 
+// The 0.1 spellings stay accepted for one release: --center-distance is --centre-distance, and
+// the JSON carries the old keys with the same values.
+TEST(GearCommand, AmericanSpellingIsAnAlias) {
+  const CliRun r = run("--z1 12 --z2 24 --module 3 --center-distance=56.5 --x1 0.6 --center-distance-deviation 0.02 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["pair"]["centre_distance_mm"].get<double>(), 56.5, 5e-4);
+  EXPECT_EQ(j["pair"]["center_distance_mm"], j["pair"]["centre_distance_mm"]);
+  EXPECT_EQ(j["pair"]["reference_center_distance_mm"], j["pair"]["reference_centre_distance_mm"]);
+  EXPECT_NEAR(j["pair"]["center_distance_deviation_mm"].get<double>(), 0.02, 1e-12);
+  EXPECT_EQ(j["pair"]["center_distance_deviation_mm"], j["pair"]["centre_distance_deviation_mm"]);
+}
+
 TEST(GearCommand, UnitsInValuesAndTextTable) {
   // OTM 2015 problem 3 (seed 000_bc94d104a9983772.txt), modified first stage, units written out.
-  const CliRun r = run("--z1 10 --z2 40 --module '9 mm' --pressure-angle '20 deg' --center-distance '225 mm' --x1 0.23529411764705882");
+  const CliRun r = run("--z1 10 --z2 40 --module '9 mm' --pressure-angle '20 deg' --centre-distance '225 mm' --x1 0.23529411764705882");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("V-0"), std::string::npos);
   EXPECT_NE(r.out.find("225.0000"), std::string::npos);
@@ -100,11 +113,11 @@ TEST(GearCommand, BadInputExitsWithStatus2AndNamesTheOption) {
       {"--z1 12 --z2 24 --module '3 deg'", "--module"},
       {"--z1 12 --z2 24 --module 3 --pressure-angle 45", "--pressure-angle"},
       {"--z1 12 --z2 24 --module 3 --pressure-angle 0", "--pressure-angle"},
-      {"--z1 12 --z2 24 --module 3 --center-distance 40", "--center-distance"},
-      {"--z1 12 --z2 24 --module 3 --center-distance 200", "--center-distance"},
-      {"--z1 12 --z2 24 --module 3 --center-distance '5 deg'", "--center-distance"},
+      {"--z1 12 --z2 24 --module 3 --centre-distance 40", "--centre-distance"},
+      {"--z1 12 --z2 24 --module 3 --centre-distance 200", "--centre-distance"},
+      {"--z1 12 --z2 24 --module 3 --centre-distance '5 deg'", "--centre-distance"},
       {"--z1 30 --z2 20 --module 3 --internal", "--z2"},
-      {"--z1 12 --z2 24 --module 3 --center-distance 56.5 --x2 0.3", "--x2"},
+      {"--z1 12 --z2 24 --module 3 --centre-distance 56.5 --x2 0.3", "--x2"},
       {"--z1 12 --z2 24 --module 3 --backlash 0.1 --allowance1 -0.05", "--backlash"},
       {"--z1 12 --z2 24 --module 3 --split balanced", "--split"},
       {"--z1 12 --z2 24 --module 3 --pin-diameter 0", "--pin-diameter"},

@@ -39,22 +39,22 @@ TEST(Otm2015Problem3, ToothNumbersOfBothStages) {
   // a = m1 (z1 + z2)/2 = 225 mm; stage 2, m2 = 5: z3 + z4 = 90, z4 = 4 z3 -> z3 = 18, z4 = 72.
   const int z1 = 15, z2 = 4 * z1;
   EXPECT_EQ(z2, 60);
-  const double a = gg::reference_center_distance(z1, z2, 6.0);
+  const double a = gg::reference_centre_distance(z1, z2, 6.0);
   EXPECT_DOUBLE_EQ(a, 225.0);
-  const double sum34 = gg::teeth_sum_for_center_distance(a, 5.0, 0.0);
+  const double sum34 = gg::teeth_sum_for_centre_distance(a, 5.0, 0.0);
   EXPECT_DOUBLE_EQ(sum34, 90.0);
   const int z3 = static_cast<int>(sum34 / 5.0), z4 = 4 * z3;
   EXPECT_EQ(z3, 18);
   EXPECT_EQ(z4, 72);
   // b) the modified first stage: m = 9, z1' = 10, z2' = 40 fits the same a without shift sum.
-  EXPECT_DOUBLE_EQ(gg::teeth_sum_for_center_distance(a, 9.0, 0.0), 50.0);
+  EXPECT_DOUBLE_EQ(gg::teeth_sum_for_centre_distance(a, 9.0, 0.0), 50.0);
 }
 
 TEST(Otm2015Problem3, TableOfTheModifiedFirstStage) {
   // c) solution table: V-0 pair, x = +-(14 - Z)/17 = +-0.2353 (x of the pinion from the seed's
   // practical undercut limit), given the same centre distance 225 mm.
   gg::GearPairInput in = pair(10, 40, 9.0, 4.0 / 17.0, 0.0);
-  in.center_distance = 225.0;
+  in.centre_distance = 225.0;
   in.split = gg::ShiftSplit::user_x1;
   const gg::GearPairResult r = gg::compute_gear_pair(in);
   const auto& p = r.gear[0];
@@ -121,7 +121,7 @@ TEST(KhkExternalVPair, GivenShifts) {
 
 TEST(KhkExternalVPair, GivenCentreDistance) {
   gg::GearPairInput in = pair(12, 24, 3.0, 0.6, 0.0);
-  in.center_distance = 56.5;
+  in.centre_distance = 56.5;
   in.split = gg::ShiftSplit::user_x1;
   const gg::GearPairResult r = gg::compute_gear_pair(in);
   EXPECT_NEAR(r.pair.sum_x, 0.960, 5e-4);
@@ -134,7 +134,7 @@ TEST(KhkExternalVPair, GivenCentreDistance) {
 
 TEST(GearPair, BalancedAndProportionalSplits) {
   gg::GearPairInput in = pair(12, 24, 3.0, 0.0, 0.0);
-  in.center_distance = 56.5;
+  in.centre_distance = 56.5;
   in.split = gg::ShiftSplit::balanced_sliding;
   const auto b = gg::compute_gear_pair(in);
   EXPECT_EQ(b.pair.split, gg::ShiftSplit::balanced_sliding);
@@ -207,7 +207,7 @@ TEST(InternalPair, GivenShifts) {
 TEST(InternalPair, GivenCentreDistance) {
   gg::GearPairInput in = pair(17, 96, 14.0, 0.2, 0.0);
   in.internal = true;
-  in.center_distance = 557.0887;
+  in.centre_distance = 557.0887;
   in.split = gg::ShiftSplit::user_x1;
   const auto r = gg::compute_gear_pair(in);
   EXPECT_NEAR(r.gear[1].x, -0.5, 2e-5);
@@ -234,7 +234,7 @@ TEST(InternalPair, RingMustBeLargerThanPinion) {
 TEST(HelicalPair, GivenCentreDistanceIso21771) {
   gg::GearPairInput in = pair(31, 30, 3.5, 0.291, 0.0);
   in.helix_angle = 21.0 * kDeg;
-  in.center_distance = 116.5;
+  in.centre_distance = 116.5;
   in.split = gg::ShiftSplit::user_x1;
   in.face_width = 40.0;
   const auto r = gg::compute_gear_pair(in);
@@ -342,14 +342,14 @@ TEST(GearPairErrors, FieldsAreNamed) {
   in.pressure_angle = 50.0 * kDeg;
   EXPECT_EQ(field_of(in), "pressure_angle");
   in = pair(12, 24, 3.0, 0, 0);
-  in.center_distance = 40.0;  // below the sum of base radii 50.74 mm
-  EXPECT_EQ(field_of(in), "center_distance");
+  in.centre_distance = 40.0;  // below the sum of base radii 50.74 mm
+  EXPECT_EQ(field_of(in), "centre_distance");
   // Too far apart: the shift sum needed (2.63) exceeds what the teeth allow before they become
   // pointed (hand check: at x1 + x2 = 2.63 no split leaves both tips with positive thickness).
-  in.center_distance = 60.0;
-  EXPECT_EQ(field_of(in), "center_distance");
-  in.center_distance = 1e6;
-  EXPECT_EQ(field_of(in), "center_distance");
+  in.centre_distance = 60.0;
+  EXPECT_EQ(field_of(in), "centre_distance");
+  in.centre_distance = 1e6;
+  EXPECT_EQ(field_of(in), "centre_distance");
   // An absurd shift sum given directly is reported against the shifts, never as a crash.
   in = pair(12, 24, 3.0, -1.0, -1.0);
   EXPECT_EQ(field_of(in), "x2");

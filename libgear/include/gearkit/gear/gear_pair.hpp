@@ -23,7 +23,7 @@
 namespace gearkit::gear {
 
 /// Bad pair data. `field` names the GearPairInput member at fault ("z1", "module",
-/// "center_distance", ...) so that front ends can name their own option or key.
+/// "centre_distance", ...) so that front ends can name their own option or key.
 class GeometryError : public std::invalid_argument {
  public:
   GeometryError(std::string field, const std::string& message);
@@ -52,8 +52,8 @@ struct GearPairInput {
   double h_aP = 1.0, h_fP = 1.25, rho_fP = 0.38;  ///< basic rack coefficients (ISO 53 A)
 
   double x1 = 0, x2 = 0;                 ///< profile shift coefficients, used if no centre distance
-  std::optional<double> center_distance; ///< mm, > 0; if set the shift sum follows from it
-  ShiftSplit split = ShiftSplit::balanced_sliding;  ///< with center_distance; user_x1 keeps x1
+  std::optional<double> centre_distance; ///< mm, > 0; if set the shift sum follows from it
+  ShiftSplit split = ShiftSplit::balanced_sliding;  ///< with centre_distance; user_x1 keeps x1
   bool apply_tip_shortening = true;
 
   double face_width = 0;       ///< mm, b >= 0 (overlap ratio; 0 gives eps_beta = 0)
@@ -120,7 +120,7 @@ GearPairResult compute_gear_pair(const GearPairInput& input);
 // ---- pair formulas (signed ISO 21771 convention: z2 < 0 for internal pairs) ----
 
 /// Reference centre distance a_d = m_t (z1 + z2) / 2.
-double reference_center_distance(int z1, int z2, double m_t);
+double reference_centre_distance(int z1, int z2, double m_t);
 
 /// Working transverse pressure angle from the shift sum:
 /// inv alpha_wt = inv alpha_t + 2 tan(alpha_n) (x1 + x2) / (z1 + z2).
@@ -129,16 +129,16 @@ double working_pressure_angle(double alpha_t, double alpha_n, int z1, int z2, do
 
 /// Working transverse pressure angle from the centre distance: cos alpha_wt = a_d cos(alpha_t) / a.
 /// @throws std::domain_error if |a| < |a_d| cos alpha_t (the base circles would overlap).
-double working_pressure_angle_for_center_distance(double a_d, double alpha_t, double a);
+double working_pressure_angle_for_centre_distance(double a_d, double alpha_t, double a);
 
 /// Centre distance a = a_d cos(alpha_t) / cos(alpha_wt).
-double center_distance(double a_d, double alpha_t, double alpha_wt);
+double centre_distance(double a_d, double alpha_t, double alpha_wt);
 
 /// Shift sum for a working pressure angle: x1 + x2 = (z1 + z2)(inv alpha_wt - inv alpha_t) / (2 tan alpha_n).
 double sum_of_shifts(int z1, int z2, double alpha_t, double alpha_n, double alpha_wt);
 
 /// Centre distance modification coefficient y = (a - a_d) / m_n.
-double center_distance_modification(double a, double a_d, double m_n);
+double centre_distance_modification(double a, double a_d, double m_n);
 
 /// Tip shortening coefficient k = x1 + x2 - y.
 double tip_shortening(double sum_x, double y);
@@ -169,6 +169,6 @@ double max_specific_sliding(int z_i, int z_j, double d_bj, double d_aj, double a
 
 /// Sum of tooth numbers that fits centre distance a at module m_n without shift:
 /// z1 + z2 = 2 a cos(beta) / m_n (not rounded; the caller checks it is an integer).
-double teeth_sum_for_center_distance(double a, double m_n, double beta);
+double teeth_sum_for_centre_distance(double a, double m_n, double beta);
 
 }  // namespace gearkit::gear
