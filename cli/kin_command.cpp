@@ -5,6 +5,7 @@
 // driving torque and joint reactions.
 #include "kin_analysis.hpp"
 #include "kin_command.hpp"
+#include "kin_example.hpp"
 
 #include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/command_line.hpp>
@@ -403,7 +404,9 @@ int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
       "driver", io::po::value<std::string>()->value_name("NAME"), "which driver --at/--sweep move (default: the first)")(
       "outputs", io::po::value<std::string>()->value_name("A,B,..."), "only these named outputs of the model")(
       "plot", io::po::value<std::string>()->value_name("FILE.svg"), "SVG plot of the outputs against the input")(
-      "animate", io::po::value<std::string>()->value_name("FILE.svg"), "animated SVG of the mechanism through the sweep");
+      "animate", io::po::value<std::string>()->value_name("FILE.svg"), "animated SVG of the mechanism through the sweep")(
+      "example", io::po::value<std::string>()->value_name("chain:N"),
+      "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
   io::add_common_options(desc);
   io::po::positional_options_description positional;
   positional.add("file", 1);
@@ -413,6 +416,13 @@ int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
       "[--animate FILE] [--format text|json|csv|md]";
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
+  if (vm.count("example")) {
+    if (vm.count("file")) io::fail_option("--example", "expected no mechanism file with --example, found one");
+    const std::string yaml = example_mechanism_yaml(vm["example"].as<std::string>());
+    if (common.output.empty()) context.out << yaml;
+    else io::write_file_atomic(common.output, yaml, "--output");
+    return 0;
+  }
   if (!vm.count("file")) throw io::InputError(fmt::format("expected a mechanism file; usage: {}", usage));
   if (vm.count("at") && vm.count("sweep")) io::fail_option("--at", "expected either --at or --sweep, found both");
 

@@ -2,22 +2,31 @@
 
 #include <gearkit/kin/solve.hpp>
 
-#include <Eigen/SparseQR>
+#include "sparse_rank.hpp"
 
 #include <map>
 
 namespace gearkit::kin {
 
-DofReport dof(const Model& model, Data& data) {
-  DofReport r;
-  r.moving_bodies = static_cast<int>(model.bodies().size());
-  evaluate_constraints(model, data, data.t);
+namespace {
 
-  // Rows of the non-driver constraints, and a Gruebler count grouped by kind.
+// Relative threshold of the rank tests: a constraint row is dependent when what is left of it,
+// after removing its components along the rows ordered before it, is below 1e-9 of the
+// largest row norm.
+constexpr double kRankTolerance = 1e-9;
+
+// The rows of Phi_q the mobility counts (joints and elements; drivers are left out), with the
+// constraint each belongs to; fills the counts and the written-out Gruebler-Kutzbach sum.
+struct CountedRows {
   std::vector<int> rows;
-  std::vector<std::string> row_names;
+  std::vector<int> constraint;  ///< index in Model::constraints() of each row
+};
+
+CountedRows count_rows(const Model& model, DofReport& r) {
+  CountedRows counted;
   std::map<std::string, std::pair<int, int>> by_kind;  // kind -> (equations each, how many)
-  for (const ModelConstraint& mc : model.constraints()) {
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    const ModelConstraint& mc = model.constraints()[k];
     const int m = mc.constraint->equations();
     if (mc.constraint->is_driver()) {
       r.drivers += m;
@@ -27,44 +36,68 @@ DofReport dof(const Model& model, Data& data) {
     entry.first = m;
     entry.second += 1;
     for (int i = 0; i < m; ++i) {
-      rows.push_back(mc.first_row + i);
-      row_names.push_back("'" + mc.name + "' (" + mc.constraint->kind() + ")" + (m > 1 ? " row " + std::to_string(i + 1) : ""));
+      counted.rows.push_back(mc.first_row + i);
+      counted.constraint.push_back(static_cast<int>(k));
     }
   }
-  r.constraint_equations = static_cast<int>(rows.size());
+  r.moving_bodies = static_cast<int>(model.bodies().size());
+  r.constraint_equations = static_cast<int>(counted.rows.size());
   r.gruebler = 3 * r.moving_bodies - r.constraint_equations;
   r.gruebler_count = "3*" + std::to_string(r.moving_bodies);
   for (const auto& [kind, count] : by_kind)
     r.gruebler_count += " - " + std::to_string(count.first) + "*" + std::to_string(count.second) + " (" + kind + ")";
   r.gruebler_count += " = " + std::to_string(r.gruebler);
+  return counted;
+}
 
+// "'R2' (revolute) row 1": names only the rows reported, so that large models do not build a
+// string per row.
+std::string row_name(const Model& model, const CountedRows& counted, int k) {
+  const ModelConstraint& mc = model.constraints()[static_cast<std::size_t>(counted.constraint[static_cast<std::size_t>(k)])];
+  const int m = mc.constraint->equations();
+  const int within = counted.rows[static_cast<std::size_t>(k)] - mc.first_row;
+  return "'" + mc.name + "' (" + mc.constraint->kind() + ")" + (m > 1 ? " row " + std::to_string(within + 1) : "");
+}
+
+// Phi_q^T restricted to the counted rows (coordinates x counted rows), so that dependent rows
+// of Phi_q are dependent columns here.
+Eigen::SparseMatrix<double> counted_rows_transposed(const Data& data, const std::vector<int>& rows) {
+  const Eigen::SparseMatrix<double> all = data.phi_q.transpose();  // column j = row j of Phi_q
+  Eigen::SparseMatrix<double> jt(all.rows(), static_cast<int>(rows.size()));
+  std::vector<int> sizes(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) sizes[i] = static_cast<int>(all.col(rows[i]).nonZeros());
+  jt.reserve(sizes);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(all, rows[i]); it; ++it) jt.insert(it.row(), static_cast<int>(i)) = it.value();
+  jt.makeCompressed();
+  return jt;
+}
+
+// Small models: column-pivoting Householder QR of the dense Phi_q^T; the columns the pivoting
+// leaves beyond the rank are the dependent rows.
+SparseRank dense_rank(const Eigen::SparseMatrix<double>& jt) {
+  const Eigen::MatrixXd dense = jt;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(dense);
+  qr.setThreshold(kRankTolerance);
+  SparseRank r;
+  r.rank = static_cast<int>(qr.rank());
+  const auto& perm = qr.colsPermutation().indices();
+  for (int k = r.rank; k < perm.size(); ++k) r.dependent_columns.push_back(perm(k));
+  return r;
+}
+
+}  // namespace
+
+DofReport dof(const Model& model, Data& data) {
+  DofReport r;
+  const CountedRows counted = count_rows(model, r);
+  evaluate_constraints(model, data, data.t);
   const int n = model.coordinates();
-  if (rows.empty() || n == 0) {
-    r.rank = 0;
-  } else if (data.sparse) {
-    // Large models: sparse QR of Phi_q^T keeps memory and time near-linear.
-    Eigen::SparseMatrix<double> selected(static_cast<int>(rows.size()), model.equations());
-    std::vector<Eigen::Triplet<double>> pick;
-    for (std::size_t i = 0; i < rows.size(); ++i) pick.emplace_back(static_cast<int>(i), rows[i], 1.0);
-    selected.setFromTriplets(pick.begin(), pick.end());
-    Eigen::SparseMatrix<double> jt = (selected * data.phi_q).transpose();
-    jt.makeCompressed();
-    Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
-    qr.setPivotThreshold(1e-9);
-    qr.compute(jt);
-    r.rank = static_cast<int>(qr.rank());
-    const auto& perm = qr.colsPermutation().indices();
-    for (int k = r.rank; k < perm.size(); ++k) r.redundant_rows.push_back(row_names[static_cast<std::size_t>(perm(k))]);
-  } else {
-    const Eigen::MatrixXd full = data.jacobian();
-    Eigen::MatrixXd jt(n, static_cast<int>(rows.size()));
-    for (std::size_t i = 0; i < rows.size(); ++i) jt.col(static_cast<int>(i)) = full.row(rows[i]).transpose();
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jt);
-    qr.setThreshold(1e-9);
-    r.rank = static_cast<int>(qr.rank());
-    // Columns of Phi_q^T that the pivoting left beyond the rank are the dependent rows.
-    const auto& perm = qr.colsPermutation().indices();
-    for (int k = r.rank; k < perm.size(); ++k) r.redundant_rows.push_back(row_names[static_cast<std::size_t>(perm(k))]);
+  if (!counted.rows.empty() && n > 0) {
+    const Eigen::SparseMatrix<double> jt = counted_rows_transposed(data, counted.rows);
+    const SparseRank rank = data.sparse ? sparse_rank(jt, kRankTolerance) : dense_rank(jt);
+    r.rank = rank.rank;
+    for (int k : rank.dependent_columns) r.redundant_rows.push_back(row_name(model, counted, k));
   }
   r.dof = n - r.rank;
   r.redundant = r.constraint_equations - r.rank;

@@ -35,7 +35,7 @@ Data::Data(const Model& model) {
   gamma = Eigen::VectorXd::Zero(m);
   work = Eigen::VectorXd::Zero(n);
   step = Eigen::VectorXd::Zero(n);
-  sparse = n > kDenseLimit && is_square(model);
+  sparse = n > kDenseLimit;
   body_states.assign(model.bodies().size(), BodyState{});
   if (is_square(model)) lu = std::make_unique<JacobianLU>();
 

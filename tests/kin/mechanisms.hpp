@@ -118,6 +118,41 @@ inline Model four_bar_chain(const FourBarDims& f, int n, double theta2 = 0.0) {
   return m;
 }
 
+/// A chain of n parallelograms with a redundant middle link in each: loop k has ground pivots
+/// O_k = (k d, 0) and O_{k+1}; crank O_k A_k and rocker O_{k+1} B_k of length a at angle theta,
+/// coupler A_k B_k (length d, horizontal), and a middle link of length a from M_k = ((k + 1/2) d,
+/// 0) to the coupler's midpoint C_k, parallel to the cranks. The rocker of loop k is the crank
+/// of loop k + 1 (its end B_k is A_{k+1}). Drawn exactly assembled at theta. Each loop adds 3
+/// bodies and 5 revolutes (9 - 10 = -1), the first crank 3 - 2: Gruebler 1 - n, yet the chain
+/// moves with one freedom, so n constraint rows are redundant (one per middle link: the
+/// textbook parallelogram with a third parallel link). Bodies: crank 0, then coupler, rocker,
+/// middle per loop. Driver on the first crank.
+inline Model parallelogram_chain(int n, double a, double d, double theta) {
+  Model m;
+  m.ground().points = {{"O0", {0, 0}}};
+  const Eigen::Vector2d r = polar(a, theta);
+  int crank = add_link(m, "crank", theta, {{"O", {0, 0}}, {"A", r}});
+  pin(m, "O0", crank, "O", kGround, "O0");
+  for (int k = 0; k < n; ++k) {
+    const std::string i = std::to_string(k);
+    const Eigen::Vector2d o2(k * d, 0.0), o4((k + 1) * d, 0.0), mid((k + 0.5) * d, 0.0);
+    m.ground().points.emplace_back("O" + std::to_string(k + 1), o4);
+    m.ground().points.emplace_back("M" + i, mid);
+    const int coupler = add_link(m, "coupler" + i, 0.0, {{"A", o2 + r}, {"C", mid + r}, {"B", o4 + r}});
+    const int rocker = add_link(m, "rocker" + i, theta, {{"O", o4}, {"A", o4 + r}});
+    const int middle = add_link(m, "middle" + i, theta, {{"M", mid}, {"C", mid + r}});
+    pin(m, "A" + i, crank, "A", coupler, "A");
+    pin(m, "B" + i, coupler, "B", rocker, "A");
+    pin(m, "O" + std::to_string(k + 1), rocker, "O", kGround, "O" + std::to_string(k + 1));
+    pin(m, "M" + i, middle, "M", kGround, "M" + i);
+    pin(m, "C" + i, middle, "C", coupler, "C");
+    crank = rocker;
+  }
+  const int drv = m.add_constraint("input", std::make_shared<AngleDriver>(0, kGround, Motion{1.0, 0.0}));
+  m.set_driver(drv, DriverQuantity::angle, theta);
+  return m;
+}
+
 /// Seed 004 (exam 2020-21, exercise 1), the pantograph: O at the origin, crank OP (l1), coupler
 /// Q-P-R (QP = l3), slider Q on the vertical line x = d, parallelogram O P R S, output arm R-S-T.
 /// Dimensions implied by the seed's answers: l1 + l3 = 400 mm and d = 200 mm (s_max =

@@ -117,3 +117,60 @@ TEST(Dof, LargeChainUsesTheSparsePath) {
 
 }  // namespace
 }  // namespace gearkit::kin
+
+namespace gearkit::kin {
+namespace {
+
+// Chains of N four-bar loops (each rocker is the next crank), through both rank tests (dense
+// up to 64 coordinates, SuiteSparseQR above): the Gruebler-Kutzbach count 3 (2N + 1) -
+// 2 (3N + 1) = 1 is the mobility, and no row is redundant.
+TEST(Dof, FourBarChainsAgreeWithGruebler) {
+  for (const int loops : {1, 10, 11, 100, 1000}) {
+    const Model m = testing::four_bar_chain({0.040, 0.120, 0.080, 0.100}, loops, 30 * kDeg);
+    Data data(m);
+    ASSERT_TRUE(solve_position(m, data, 0.0).converged) << loops;
+    const DofReport r = dof(m, data);
+    EXPECT_EQ(r.moving_bodies, 2 * loops + 1);
+    EXPECT_EQ(r.constraint_equations, 2 * (3 * loops + 1));
+    EXPECT_EQ(r.gruebler, 1) << loops;
+    EXPECT_EQ(r.rank, 6 * loops + 2) << loops;
+    EXPECT_EQ(r.dof, 1) << loops;
+    EXPECT_EQ(r.redundant, 0) << loops;
+    EXPECT_TRUE(r.redundant_rows.empty()) << loops;
+  }
+}
+
+// Chains of N parallelograms with a third parallel link in each loop: Gruebler 1 - N, mobility
+// 1, hence exactly N redundant rows (a parallelogram with a third equal parallel link is the
+// textbook redundant constraint: Norton, Design of Machinery, sec. 2.8 "Paradoxes"). Each
+// redundant row belongs to one of the loop's five revolutes; N = 1000 has 9003 coordinates.
+TEST(Dof, ParallelogramChainsHaveOneRedundantRowPerLoop) {
+  for (const int loops : {1, 5, 30, 300, 1000}) {
+    const Model m = testing::parallelogram_chain(loops, 0.05, 0.2, 60 * kDeg);
+    Data data(m);
+    const DofReport r = dof(m, data);  // at the exactly assembled drawing
+    EXPECT_EQ(r.gruebler, 1 - loops);
+    EXPECT_EQ(r.dof, 1) << loops;
+    EXPECT_EQ(r.redundant, loops) << loops;
+    ASSERT_EQ(r.redundant_rows.size(), static_cast<std::size_t>(loops));
+    for (const std::string& row : r.redundant_rows) EXPECT_NE(row.find("(revolute)"), std::string::npos) << row;
+  }
+}
+
+// The sparse and the dense rank test agree on a model that both can take (a 70-coordinate
+// parallelogram chain with one link's constraint repeated).
+TEST(Dof, SparseAndDenseRankAgree) {
+  const Model m = testing::parallelogram_chain(7, 0.05, 0.2, 50 * kDeg);
+  Data sparse(m);
+  ASSERT_TRUE(sparse.sparse);
+  const DofReport a = dof(m, sparse);
+  Data dense(m);
+  dense.sparse = false;
+  const DofReport b = dof(m, dense);
+  EXPECT_EQ(a.rank, b.rank);
+  EXPECT_EQ(a.redundant, 7);
+  EXPECT_EQ(b.redundant, 7);
+}
+
+}  // namespace
+}  // namespace gearkit::kin

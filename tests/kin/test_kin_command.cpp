@@ -2,6 +2,8 @@
 // elements (gear mesh, epicyclic train, cam follower), plots and animations, bad input.
 #include <run_gearkit.hpp>
 
+#include "mechanisms.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
@@ -227,6 +229,31 @@ TEST(KinCommand, EveryExampleRuns) {
     EXPECT_FALSE(j["positions"].empty()) << entry.path();
     EXPECT_TRUE(j["warnings"].empty()) << entry.path() << j["warnings"].dump();
   }
+}
+
+// `--example chain:N` writes the chain of N four-bar loops: Gruebler 3 (2N + 1) - 2 (3N + 1) = 1,
+// and every loop closes at Freudenstein's open-branch angle (Norton eq. 4.10) with the previous
+// rocker angle as its input.
+TEST(KinCommand, ExampleChainOfLoops) {
+  const auto dir = scratch_dir("kin_example_chain");
+  const std::string file = (dir / "chain.yaml").string();
+  ASSERT_EQ(run_gearkit("kin --example chain:4 --output " + shell_quote(file)).status, 0);
+  const auto j = run_json(shell_quote(file) + " --at 30");
+  EXPECT_EQ(j["gruebler"], 1);
+  EXPECT_EQ(j["dof"], 1);
+  EXPECT_EQ(j["redundant"], 0);
+  double theta = 30.0 * M_PI / 180.0;
+  for (int k = 0; k < 4; ++k) {
+    const auto [theta3, theta4] = gearkit::kin::testing::four_bar_closed_form({0.040, 0.120, 0.080, 0.100}, theta);
+    const std::string i = std::to_string(k);
+    EXPECT_NEAR(j["positions"][0]["q"]["coupler" + i + ".angle_deg"].get<double>(), theta3 * 180 / M_PI, 1e-8) << k;
+    EXPECT_NEAR(j["positions"][0]["q"]["rocker" + i + ".angle_deg"].get<double>(), theta4 * 180 / M_PI, 1e-8) << k;
+    theta = theta4;
+  }
+  expect_bad_input(run_gearkit("kin --example chain:0"), "option '--example'");
+  expect_bad_input(run_gearkit("kin --example chain:12x"), "option '--example'");
+  expect_bad_input(run_gearkit("kin --example lattice:3"), "option '--example'");
+  expect_bad_input(run_gearkit("kin " + shell_quote(file) + " --example chain:3"), "option '--example'");
 }
 
 }  // namespace

@@ -21,8 +21,14 @@ struct DofReport {
 };
 
 /// Gruebler-Kutzbach count and the rank of Phi_q at data.q (call after solve_position so
-/// that the rank is that of an assembled configuration). The rank uses column-pivoting QR of
-/// Phi_q^T with a relative threshold of 1e-9.
+/// that the rank is that of an assembled configuration, and away from singular ones: at a
+/// dead point or change point the rank drops). The rank is that of Phi_q^T by a rank-revealing
+/// QR with a relative threshold of 1e-9: column-pivoting Householder QR for models up to 64
+/// coordinates, SuiteSparseQR (multifrontal, fill-reducing ordering, Heath's rank detection)
+/// above, whose cost grows linearly with the size of chain- or lattice-like linkages (a chain
+/// of 1000 four-bar loops, 6003 coordinates, in a few milliseconds). Evaluates the constraints
+/// at data.q (refreshes Phi, Phi_q; the factorisation is marked stale).
+/// @throws std::runtime_error if SuiteSparseQR runs out of memory.
 DofReport dof(const Model& model, Data& data);
 
 }  // namespace gearkit::kin
