@@ -13,6 +13,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-ezdxf
+  universal-ctags
   libslvs1-dev
   libmuparser-dev
 )
