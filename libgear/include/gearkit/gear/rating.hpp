@@ -1,0 +1,152 @@
+#pragma once
+// Load capacity of a cylindrical gear pair: the complete rating of both gears by ISO 6336
+// (2019, method B with K_Hbeta by method C), by AGMA 2101-D as Shigley teaches it, or by the
+// Lewis and Hertz equations of the course notes. One input, one output shape; the method
+// decides which factors are computed. Units: N, mm, MPa, N m, 1/min, um for deviations.
+//
+// The geometry comes from compute_gear_pair (gear_pair.hpp); the rating is a free function of
+// the table and the load, so a sizing loop computes both without building anything else.
+#include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/gear/iso6336_life.hpp>
+#include <gearkit/gear/iso6336_load.hpp>
+#include <gearkit/gear/materials.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gearkit::gear {
+
+/// Bad rating input; `field` names the RatingInput member ("T_1", "n_1", "material1", "f_pb",
+/// "face_width", ...) so that front ends can name their option or key.
+class RatingError : public std::invalid_argument {
+ public:
+  RatingError(std::string field, const std::string& message);
+  const std::string& field() const noexcept { return field_; }
+
+ private:
+  std::string field_;
+};
+
+enum class RatingMethod { iso6336, agma, lewis_hertz };
+const char* to_string(RatingMethod method);  ///< "iso6336", "agma", "lewis-hertz"
+
+/// Factors a user may impose instead of the computed value. Per-gear factors have a 1 and a 2
+/// entry; "Z_NT" in a name list means both.
+enum class Factor : int {
+  K_v, K_Hbeta, K_Fbeta, K_Halpha, K_Falpha,
+  Z_H, Z_E, Z_epsilon, Z_beta, Z_B, Z_D, Z_L, Z_v, Z_R, Z_X,
+  Z_NT1, Z_NT2, Z_W1, Z_W2,
+  Y_F1, Y_F2, Y_S1, Y_S2, Y_beta, Y_B1, Y_B2, Y_DT,
+  Y_NT1, Y_NT2, Y_deltarelT1, Y_deltarelT2, Y_RrelT1, Y_RrelT2, Y_X1, Y_X2, Y_M1, Y_M2,
+  // AGMA (Shigley chapter 14) and Lewis
+  K_s1, K_s2, K_m, K_B1, K_B2, K_R, J1, J2, I, Y_N1, Y_N2, Z_N1, Z_N2, C_H, C_f, Y1, Y2,
+  count
+};
+constexpr int kFactorCount = static_cast<int>(Factor::count);
+
+/// The name of a factor ("K_v", "Z_NT1").
+std::string_view factor_name(Factor f);
+
+/// The factors a name sets: "K_v" -> {K_v}; "Z_NT" -> {Z_NT1, Z_NT2}; "Z_NT2" -> {Z_NT2}.
+/// Empty for an unknown name.
+std::vector<Factor> factors_named(std::string_view name);
+
+/// All names accepted by factors_named, for messages.
+std::string factor_names();
+
+/// Imposed values (NaN: computed).
+struct ImposedFactors {
+  std::array<double, kFactorCount> value;
+  ImposedFactors() { value.fill(std::numeric_limits<double>::quiet_NaN()); }
+  bool has(Factor f) const { return !std::isnan(value[static_cast<int>(f)]); }
+  double get(Factor f) const { return value[static_cast<int>(f)]; }
+  void set(Factor f, double v) { value[static_cast<int>(f)] = v; }
+};
+
+enum class RootShift { generating, nominal };  ///< which profile shift feeds Y_F, Y_S (ISO: generating x_E)
+enum class AgmaMounting { open, commercial, precision, extra_precision };  ///< Shigley Eq. 14-34 (C_ma)
+enum class LewisProfile { cast, cut, hobbed, ground };  ///< Barth / Shigley Eq. 14-4 (K_v)
+
+struct RatingInput {
+  RatingMethod method = RatingMethod::iso6336;
+  double T_1 = 0;             ///< N m, torque on gear 1 (pinion), > 0
+  double n_1 = 0;             ///< 1/min, speed of gear 1 relative to the carrier of the mesh, > 0
+  double K_A = 1.0;           ///< application factor (ISO 6336-6 Annex A), AGMA overload factor K_o
+  double K_gamma = 1.0;       ///< mesh load factor (load sharing of planets), >= 1
+  std::array<Material, 2> material;
+  int quality = 6;            ///< ISO 1328-1 flank tolerance class 1..11 (Y_DT, AGMA Q_v = 17 - class... see docs)
+  // Deviations, um (NaN: not given; then K_v, K_Halpha, K_Hbeta need them or an imposed factor).
+  double f_pb = std::numeric_limits<double>::quiet_NaN();      ///< transverse base pitch deviation (larger gear value)
+  double f_falpha = std::numeric_limits<double>::quiet_NaN();  ///< profile form deviation
+  double F_betax = std::numeric_limits<double>::quiet_NaN();   ///< initial equivalent misalignment (given directly)
+  double f_ma = std::numeric_limits<double>::quiet_NaN();      ///< mesh misalignment from manufacturing
+  double f_sh = std::numeric_limits<double>::quiet_NaN();      ///< misalignment from shaft deflection (NaN: Eq. 43, B* = 1)
+  double f_Hbeta = 0;                                          ///< helix slope deviation (F_betax,min)
+  double C_a = std::numeric_limits<double>::quiet_NaN();       ///< tip relief (NaN: C_ay by running-in)
+  double life_h = 20000;      ///< required life, h, > 0
+  double nu_40 = 220;         ///< kinematic viscosity of the oil at 40 C, mm^2/s
+  std::array<double, 2> R_z_flank{3.0, 3.0};   ///< um, flank roughness R_z (6 R_a)
+  std::array<double, 2> R_z_root{10.0, 10.0};  ///< um, root roughness R_z
+  std::array<double, 2> s_R{0.0, 0.0};         ///< rim thickness, mm (0: solid)
+  std::array<double, 2> cycles_per_rev{1.0, 1.0};  ///< load cycles per turn of each gear relative to the carrier
+  std::array<bool, 2> reversed_bending{false, false};  ///< idler or planet: fully reversed bending, Y_M = 0.7
+  double S_Hmin = 1.0, S_Fmin = 1.4;  ///< required minimum safety factors
+  bool limited_pitting = false;   ///< Z_NT line with limited pitting permitted
+  bool optimum_long_life = false; ///< Z_NT = Y_NT = 1 at 1e10 (optimum conditions) instead of 0.85
+  RootShift root_shift = RootShift::generating;
+  double s_pr = 0;                ///< residual protuberance of the tool / m_n
+  std::vector<iso6336::LoadBin> spectrum;  ///< load spectrum (empty: T_1, n_1 for life_h)
+  double reliability = 0.99;      ///< AGMA
+  int Q_v = 0;                    ///< AGMA quality number 3..16 for K_v (0: 17 - quality)
+  AgmaMounting agma_mounting = AgmaMounting::commercial;
+  bool agma_crowned = false;
+  LewisProfile lewis_profile = LewisProfile::hobbed;
+  ImposedFactors factors;
+};
+
+struct GearRating {
+  double n = 0;              ///< 1/min relative speed
+  double N_L = 0;            ///< load cycles over the life (or the spectrum)
+  double Z_B_or_D = 1, sigma_H = 0, sigma_HG = 0, sigma_HP = 0, S_H = 0;
+  double Z_NT = 1, Z_L = 1, Z_v = 1, Z_R = 1, Z_W = 1, Z_X = 1;
+  double s_Fn = NAN, rho_F = NAN, h_Fe = NAN, alpha_Fen = NAN;
+  double Y_F = NAN, Y_S = NAN, Y_beta = 1, Y_B = 1, Y_DT = 1, Y_M = 1;
+  double Y_deltarelT = 1, Y_RrelT = 1, Y_X = 1, Y_NT = 1;
+  double sigma_F0 = 0, sigma_F = 0, sigma_FG = 0, sigma_FP = 0, S_F = 0;
+  double life_H_h = 0, life_F_h = 0;  ///< hours to reach S_min (inf: unlimited)
+  double damage_H = 0, damage_F = 0;  ///< Miner sums for the required life or the spectrum
+  std::vector<std::pair<std::string, double>> extra;  ///< method-specific factors (AGMA K_s, J, Y_N, ...)
+};
+
+struct PairRating {
+  RatingMethod method = RatingMethod::iso6336;
+  double T_1 = 0, n_1 = 0, F_t = 0, v = 0;
+  double K_A = 1, K_gamma = 1, K_v = 1, K_Hbeta = 1, K_Halpha = 1, K_Fbeta = 1, K_Falpha = 1;
+  double c_th = NAN, c_prime = NAN, c_gamma_alpha = NAN, c_gamma_beta = NAN;
+  double m_red = NAN, n_E1 = NAN, N = NAN, N_S = NAN;
+  iso6336::ResonanceRange range = iso6336::ResonanceRange::subcritical;
+  double F_betax = NAN, F_betay = NAN, f_sh = NAN, y_alpha = NAN;
+  double Z_H = 1, Z_E = 1, Z_epsilon = 1, Z_beta = 1, sigma_H0 = 0;
+  double eps_alpha = 0, eps_beta = 0, eps_gamma = 0;
+  double T_eq = NAN;  ///< equivalent torque of a spectrum for pitting of gear 1 (N m)
+  std::array<GearRating, 2> gear;
+  std::vector<std::pair<std::string, double>> extra;
+  ImposedFactors imposed;  ///< which factors were imposed (copy of the input's)
+  std::vector<std::string> warnings;
+};
+
+/// Rates the pair. @throws RatingError naming the input field when the input is invalid
+/// (T_1 <= 0, n_1 <= 0, face width 0, an invalid material, life <= 0, quality outside 1..11,
+/// missing deviations for a computed K_v / K_Hbeta / K_Halpha, a spectrum row with T <= 0 ...).
+PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& input);
+
+/// Checks the load input alone (same errors as rate_gear_pair for the load fields).
+void validate(const RatingInput& input);
+
+}  // namespace gearkit::gear

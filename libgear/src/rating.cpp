@@ -1,0 +1,278 @@
+// The ISO 6336 chain (parts 1, 2, 3, 6) for a computed gear table, and the common front door
+// for the three methods. The formulas live in iso6336_*.cpp; here they are put in order.
+#include <gearkit/gear/rating.hpp>
+
+#include "rating_detail.hpp"
+
+#include <gearkit/gear/iso6336_pitting.hpp>
+#include <gearkit/gear/iso6336_root.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace gearkit::gear {
+
+namespace iso = iso6336;
+
+RatingError::RatingError(std::string field, const std::string& message)
+    : std::invalid_argument(message), field_(std::move(field)) {}
+
+const char* to_string(RatingMethod method) {
+  switch (method) {
+    case RatingMethod::iso6336: return "iso6336";
+    case RatingMethod::agma: return "agma";
+    case RatingMethod::lewis_hertz: return "lewis-hertz";
+  }
+  return "iso6336";
+}
+
+namespace detail {
+
+Mesh mesh_of(const GearPairInput& in, const GearPairResult& r) {
+  Mesh m;
+  const GearResult& g1 = r.gear[0];
+  const GearResult& g2 = r.gear[1];
+  m.z = {g1.z, g2.z};
+  m.internal = g2.internal;
+  m.m_n = g1.m_n;
+  m.alpha_n = g1.alpha_n;
+  m.alpha_t = g1.alpha_t;
+  m.beta = g1.beta;
+  m.beta_b = g1.beta_b;
+  m.alpha_wt = r.pair.alpha_wt;
+  m.d = {g1.d, g2.d};
+  m.d_b = {g1.d_b, g2.d_b};
+  m.d_a = {g1.d_a, g2.d_a};
+  m.d_f = {g1.d_f, g2.d_f};
+  m.d_w = {g1.d_w, g2.d_w};
+  m.x = {g1.x, g2.x};
+  m.A_sn = {g1.A_sn, g2.A_sn};
+  m.z_n = {g1.z_n, g2.z_n};
+  m.u = r.pair.u;
+  m.b = in.face_width;
+  m.h_fP = in.h_fP;
+  m.rho_fP = in.rho_fP;
+  m.eps_alpha = r.pair.eps_alpha;
+  m.eps_beta = r.pair.eps_beta;
+  m.eps_gamma = r.pair.eps_gamma;
+  return m;
+}
+
+bool surface_hardened(MaterialClass k) {
+  return k == MaterialClass::case_carburized || k == MaterialClass::induction_hardened || k == MaterialClass::nitrided ||
+         k == MaterialClass::nitrided_through_hardened || k == MaterialClass::nitrocarburized;
+}
+
+bool cast_iron(MaterialClass k) { return k == MaterialClass::grey_cast_iron; }
+
+double imposed_or(const ImposedFactors& f, Factor which, double computed) { return f.has(which) ? f.get(which) : computed; }
+
+Factor per_gear(Factor first, int i) { return static_cast<Factor>(static_cast<int>(first) + i); }
+
+double hours_for_cycles(double N, double n, double cycles_per_rev) {
+  if (std::isinf(N)) return N;
+  return N / (60.0 * n * cycles_per_rev);
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::Mesh;
+
+void require(bool ok, const char* field, const std::string& message) {
+  if (!ok) throw RatingError(field, message);
+}
+
+void require_deviation(double value, const char* field, const char* what) {
+  require(std::isfinite(value) && value >= 0.0, field,
+          fmt::format("the {} needs {} (um, >= 0); give it, or --quality once ISO 1328 grades are available, or impose "
+                      "the factor",
+                      what, field));
+}
+
+// K_v, method B (ISO 6336-1:2019 6.5.9).
+void dynamic_factor(const Mesh& m, const RatingInput& in, PairRating& r) {
+  const double F_per_b = in.K_A * r.F_t / m.b;
+  const double z_n2 = m.internal ? std::numeric_limits<double>::infinity() : m.z_n[1];
+  r.c_th = iso::theoretical_single_stiffness(iso::minimum_flank_deformation(m.z_n[0], z_n2, m.x[0], m.x[1]));
+  const double C_B = iso::basic_rack_factor(m.h_fP, m.alpha_n);
+  r.c_prime = iso::single_stiffness(r.c_th, 0.8, 1.0, C_B, m.beta, F_per_b);
+  r.c_gamma_alpha = iso::mesh_stiffness_alpha(r.c_prime, m.eps_alpha);
+  r.c_gamma_beta = iso::mesh_stiffness_beta(r.c_gamma_alpha);
+  const double d_m1 = 0.5 * (m.d_a[0] + m.d_f[0]);
+  const double rho2_term = m.internal ? 1e300 : in.material[1].density;  // a ring acts as an infinite mass
+  r.m_red = iso::reduced_mass(d_m1, m.d_b[0], 0.0, 0.0, in.material[0].density, rho2_term, m.u);
+  r.n_E1 = iso::resonance_speed(m.z[0], r.c_gamma_alpha, r.m_red);
+  r.N = r.n_1 / r.n_E1;
+  r.N_S = iso::resonance_lower_limit(F_per_b);
+  r.range = iso::resonance_range(r.N, r.N_S);
+  if (in.factors.has(Factor::K_v)) {
+    r.K_v = in.factors.get(Factor::K_v);
+    return;
+  }
+  require_deviation(in.f_pb, "f_pb", "dynamic factor K_v");
+  require_deviation(in.f_falpha, "f_falpha", "dynamic factor K_v");
+  auto y = [&](double f, int i) {
+    const MaterialClass k = in.material[i].kind;
+    return iso::running_in_allowance_alpha(f, in.material[i].sigma_Hlim, detail::surface_hardened(k), detail::cast_iron(k), r.v);
+  };
+  r.y_alpha = 0.5 * (y(in.f_pb, 0) + y(in.f_pb, 1));
+  const double y_f = 0.5 * (y(in.f_falpha, 0) + y(in.f_falpha, 1));
+  const double C_a = std::isnan(in.C_a) ? std::max(iso::tip_relief_by_running_in(in.material[0].sigma_Hlim),
+                                                   iso::tip_relief_by_running_in(in.material[1].sigma_Hlim))
+                                        : in.C_a;
+  const auto B = iso::deviation_terms(r.c_prime, in.f_pb - r.y_alpha, in.f_falpha - y_f, C_a, F_per_b);
+  r.K_v = iso::dynamic_factor(r.N, r.N_S, iso::dynamic_coefficients(m.eps_gamma), B);
+}
+
+// K_Hbeta by method C and K_Fbeta (ISO 6336-1:2019 7.6, 7.7).
+void face_load_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
+  const double F_m_per_b = r.F_t * in.K_A * r.K_gamma * r.K_v / m.b;
+  if (in.factors.has(Factor::K_Hbeta)) {
+    r.K_Hbeta = in.factors.get(Factor::K_Hbeta);
+  } else {
+    if (std::isfinite(in.F_betax)) {
+      require(in.F_betax >= 0.0, "F_betax", fmt::format("expected F_betax >= 0 um, found {}", in.F_betax));
+      r.F_betax = in.F_betax;
+    } else {
+      require_deviation(in.f_ma, "f_ma", "face load factor K_Hbeta (method C)");
+      r.f_sh = std::isfinite(in.f_sh) ? in.f_sh : iso::shaft_deflection_misalignment(F_m_per_b, m.b, m.d[0], 0.0, 0.0, 0.0, 0.0);
+      r.F_betax = iso::initial_equivalent_misalignment(r.f_sh, in.f_ma, F_m_per_b, in.f_Hbeta);
+    }
+    double y_beta = 0.0;
+    for (int i = 0; i < 2; ++i) {
+      const MaterialClass k = in.material[i].kind;
+      y_beta += 0.5 * iso::running_in_allowance_beta(r.F_betax, in.material[i].sigma_Hlim, detail::surface_hardened(k),
+                                                     detail::cast_iron(k), r.v);
+    }
+    r.F_betay = std::max(0.0, r.F_betax - y_beta);
+    r.K_Hbeta = iso::face_load_factor_H(r.c_gamma_beta, r.F_betay, F_m_per_b);
+  }
+  const double h1 = 0.5 * (m.d_a[0] - m.d_f[0]);
+  const double h2 = 0.5 * std::fabs(m.d_a[1] - m.d_f[1]);
+  const double N_F = iso::face_load_exponent(std::min(m.b / h1, m.b / h2));
+  r.K_Fbeta = detail::imposed_or(in.factors, Factor::K_Fbeta, iso::face_load_factor_F(r.K_Hbeta, N_F));
+}
+
+// K_Halpha, K_Falpha (ISO 6336-1:2019 8.3, method B).
+void transverse_load_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
+  if (in.factors.has(Factor::K_Halpha) && in.factors.has(Factor::K_Falpha)) {
+    r.K_Halpha = in.factors.get(Factor::K_Halpha);
+    r.K_Falpha = in.factors.get(Factor::K_Falpha);
+    return;
+  }
+  require_deviation(in.f_pb, "f_pb", "transverse load factor K_Halpha");
+  if (std::isnan(r.y_alpha)) {
+    r.y_alpha = 0.0;
+    for (int i = 0; i < 2; ++i) {
+      const MaterialClass k = in.material[i].kind;
+      r.y_alpha += 0.5 * iso::running_in_allowance_alpha(in.f_pb, in.material[i].sigma_Hlim, detail::surface_hardened(k),
+                                                         detail::cast_iron(k), r.v);
+    }
+  }
+  const double F_tH_per_b = r.F_t * r.K_gamma * in.K_A * r.K_v * r.K_Hbeta / m.b;
+  const double K = iso::transverse_load_factor(m.eps_gamma, r.c_gamma_alpha, in.f_pb - r.y_alpha, F_tH_per_b);
+  r.K_Halpha = detail::imposed_or(in.factors, Factor::K_Halpha, iso::limit_K_Halpha(K, m.eps_gamma, m.eps_alpha, r.Z_epsilon));
+  r.K_Falpha = detail::imposed_or(in.factors, Factor::K_Falpha, iso::limit_K_Falpha(K, m.eps_gamma, m.eps_alpha));
+}
+
+// Factors of ISO 6336-2 common to both gears.
+void pair_contact_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
+  const auto& f = in.factors;
+  r.Z_H = detail::imposed_or(f, Factor::Z_H, iso::zone_factor(m.beta_b, m.alpha_t, m.alpha_wt));
+  r.Z_E = detail::imposed_or(f, Factor::Z_E, iso::elasticity_factor(in.material[0].E, in.material[0].nu, in.material[1].E,
+                                                                     in.material[1].nu));
+  r.Z_epsilon = detail::imposed_or(f, Factor::Z_epsilon, iso::contact_ratio_factor(m.eps_alpha, m.eps_beta));
+  r.Z_beta = detail::imposed_or(f, Factor::Z_beta, iso::helix_angle_factor_H(m.beta));
+}
+
+}  // namespace
+
+void validate(const RatingInput& in) {
+  require(std::isfinite(in.T_1) && in.T_1 > 0.0, "T_1", fmt::format("expected a torque > 0 N m, found {}", in.T_1));
+  require(std::isfinite(in.n_1) && in.n_1 > 0.0, "n_1", fmt::format("expected a speed > 0 1/min, found {}", in.n_1));
+  require(std::isfinite(in.K_A) && in.K_A >= 1.0, "K_A", fmt::format("expected an application factor >= 1, found {}", in.K_A));
+  require(std::isfinite(in.K_gamma) && in.K_gamma >= 1.0, "K_gamma", fmt::format("expected K_gamma >= 1, found {}", in.K_gamma));
+  require(in.quality >= 1 && in.quality <= 11, "quality", fmt::format("expected an ISO 1328 grade 1..11, found {}", in.quality));
+  require(std::isfinite(in.life_h) && in.life_h > 0.0, "life_h", fmt::format("expected a life > 0 h, found {}", in.life_h));
+  require(std::isfinite(in.nu_40) && in.nu_40 > 0.0, "nu_40", fmt::format("expected a viscosity > 0 mm^2/s, found {}", in.nu_40));
+  require(std::isfinite(in.S_Hmin) && in.S_Hmin > 0.0, "S_Hmin", fmt::format("expected S_Hmin > 0, found {}", in.S_Hmin));
+  require(std::isfinite(in.S_Fmin) && in.S_Fmin > 0.0, "S_Fmin", fmt::format("expected S_Fmin > 0, found {}", in.S_Fmin));
+  require(in.reliability > 0.5 && in.reliability < 1.0, "reliability",
+          fmt::format("expected a reliability in (0.5, 1), found {}", in.reliability));
+  for (int i = 0; i < 2; ++i) {
+    const char* field = i == 0 ? "material1" : "material2";
+    try {
+      validate(in.material[i]);
+    } catch (const std::invalid_argument& e) {
+      throw RatingError(field, e.what());
+    }
+    require(in.R_z_flank[i] > 0.0 && std::isfinite(in.R_z_flank[i]), "R_z_flank",
+            fmt::format("expected a flank roughness > 0 um, found {}", in.R_z_flank[i]));
+    require(in.R_z_root[i] >= 0.0 && std::isfinite(in.R_z_root[i]), "R_z_root",
+            fmt::format("expected a root roughness >= 0 um, found {}", in.R_z_root[i]));
+    require(in.s_R[i] >= 0.0 && std::isfinite(in.s_R[i]), "s_R", fmt::format("expected a rim thickness >= 0 mm, found {}", in.s_R[i]));
+    require(in.cycles_per_rev[i] > 0.0 && std::isfinite(in.cycles_per_rev[i]), "cycles_per_rev",
+            fmt::format("expected load cycles per turn > 0, found {}", in.cycles_per_rev[i]));
+  }
+  for (int f = 0; f < kFactorCount; ++f) {
+    const double v = in.factors.value[f];
+    require(std::isnan(v) || (std::isfinite(v) && v > 0.0), "factor",
+            fmt::format("expected an imposed {} > 0, found {}", factor_name(static_cast<Factor>(f)), v));
+  }
+  for (std::size_t k = 0; k < in.spectrum.size(); ++k) {
+    const auto& bin = in.spectrum[k];
+    require(std::isfinite(bin.T_1) && bin.T_1 > 0.0 && std::isfinite(bin.n_1) && bin.n_1 > 0.0 && std::isfinite(bin.hours) &&
+                bin.hours > 0.0,
+            "spectrum", fmt::format("row {}: expected torque > 0, speed > 0 and hours > 0, found {} N m, {} 1/min, {} h", k + 1,
+                                    bin.T_1, bin.n_1, bin.hours));
+  }
+}
+
+namespace detail {
+
+// The ISO 6336 rating at one operating point, without life evaluation.
+PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1, double n_1) {
+  PairRating r;
+  r.method = RatingMethod::iso6336;
+  r.T_1 = T_1;
+  r.n_1 = n_1;
+  r.K_A = in.K_A;
+  r.K_gamma = in.K_gamma;
+  r.eps_alpha = m.eps_alpha;
+  r.eps_beta = m.eps_beta;
+  r.eps_gamma = m.eps_gamma;
+  r.F_t = iso::nominal_tangential_load(T_1, m.d[0]);
+  r.v = iso::pitch_line_speed(m.d[0], n_1);
+  pair_contact_factors(m, in, r);
+  dynamic_factor(m, in, r);
+  face_load_factors(m, in, r);
+  transverse_load_factors(m, in, r);
+  r.sigma_H0 = iso::nominal_contact_stress(r.Z_H, r.Z_E, r.Z_epsilon, r.Z_beta, r.F_t, m.d[0], m.b, m.u, m.internal);
+  contact_of_gears(m, in, r);
+  root_of_gears(m, in, r);
+  return r;
+}
+
+}  // namespace detail
+
+PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& in) {
+  validate(in);
+  require(geometry_input.face_width > 0.0, "face_width", "the rating needs a face width b > 0 mm");
+  const Mesh m = detail::mesh_of(geometry_input, geometry);
+  PairRating r;
+  switch (in.method) {
+    case RatingMethod::iso6336: r = detail::rate_iso6336(m, in); break;
+    case RatingMethod::agma: r = detail::rate_agma(m, in); break;
+    case RatingMethod::lewis_hertz: r = detail::rate_lewis_hertz(m, in); break;
+  }
+  r.imposed = in.factors;
+  detail::safety_warnings(in, r);
+  return r;
+}
+
+}  // namespace gearkit::gear
