@@ -134,8 +134,11 @@ PairRating rate_agma(const Mesh& m, const RatingInput& in) {
   r.eps_alpha = m.eps_alpha;
   r.eps_beta = m.eps_beta;
   r.eps_gamma = m.eps_gamma;
-  const int Q_v = in.Q_v > 0 ? in.Q_v : 17 - in.quality;
-  r.K_v = imposed_or(f, Factor::K_v, agma::dynamic_factor(Q_v, r.v));
+  const int Q_v = in.Q_v > 0 ? in.Q_v : in.quality > 0 ? 17 - in.quality : 0;
+  if (Q_v == 0 && !f.has(Factor::K_v)) {
+    throw RatingError("Q_v", "the AGMA dynamic factor needs the quality number Q_v (or the ISO grade, or an imposed K_v)");
+  }
+  r.K_v = imposed_or(f, Factor::K_v, agma::dynamic_factor(std::min(12, Q_v), r.v));
   r.K_Hbeta = r.K_Fbeta = imposed_or(f, Factor::K_m, agma::load_distribution_factor(m.b, m.d[0], in.agma_mounting, in.agma_crowned));
   const double m_t = m.m_n / std::cos(m.beta);
   const double m_N = m.beta == 0.0 ? 1.0

@@ -4,6 +4,7 @@
 
 #include "rating_detail.hpp"
 
+#include <gearkit/gear/accuracy.hpp>
 #include <gearkit/gear/iso6336_pitting.hpp>
 #include <gearkit/gear/iso6336_root.hpp>
 
@@ -190,6 +191,18 @@ void pair_contact_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
   r.Z_beta = detail::imposed_or(f, Factor::Z_beta, iso::helix_angle_factor_H(m.beta));
 }
 
+// Deviations not given, from the ISO 1328-1:2013 tolerances of the accuracy grade (accuracy.hpp),
+// the larger of both gears: the mesh sees the worse one.
+void deviations_of_quality(const Mesh& m, RatingInput& in) {
+  FlankTolerances t[2];
+  for (int i = 0; i < 2; ++i) t[i] = flank_tolerances({m.d[i], m.m_n, m.b, m.z[i], m.beta, in.quality, Iso1328Edition::iso2013});
+  auto larger = [&](double FlankTolerances::*f) { return std::max(t[0].*f, t[1].*f); };
+  if (std::isnan(in.f_pb)) in.f_pb = larger(&FlankTolerances::f_pT) * std::cos(m.alpha_t);
+  if (std::isnan(in.f_falpha)) in.f_falpha = larger(&FlankTolerances::f_falphaT);
+  if (in.f_Hbeta == 0.0) in.f_Hbeta = larger(&FlankTolerances::f_HbetaT);
+  if (std::isnan(in.f_ma)) in.f_ma = larger(&FlankTolerances::f_HbetaT);
+}
+
 }  // namespace
 
 void validate(const RatingInput& in) {
@@ -197,11 +210,12 @@ void validate(const RatingInput& in) {
   require(std::isfinite(in.n_1) && in.n_1 > 0.0, "n_1", fmt::format("expected a speed > 0 1/min, found {}", in.n_1));
   require(std::isfinite(in.K_A) && in.K_A >= 1.0, "K_A", fmt::format("expected an application factor >= 1, found {}", in.K_A));
   require(std::isfinite(in.K_gamma) && in.K_gamma >= 1.0, "K_gamma", fmt::format("expected K_gamma >= 1, found {}", in.K_gamma));
-  require(in.quality >= 1 && in.quality <= 11, "quality", fmt::format("expected an ISO 1328 grade 1..11, found {}", in.quality));
+  require(in.quality >= 0 && in.quality <= 11, "quality", fmt::format("expected an ISO 1328 grade 1..11, found {}", in.quality));
   require(std::isfinite(in.life_h) && in.life_h > 0.0, "life_h", fmt::format("expected a life > 0 h, found {}", in.life_h));
   require(std::isfinite(in.nu_40) && in.nu_40 > 0.0, "nu_40", fmt::format("expected a viscosity > 0 mm^2/s, found {}", in.nu_40));
   require(std::isfinite(in.S_Hmin) && in.S_Hmin > 0.0, "S_Hmin", fmt::format("expected S_Hmin > 0, found {}", in.S_Hmin));
   require(std::isfinite(in.S_Fmin) && in.S_Fmin > 0.0, "S_Fmin", fmt::format("expected S_Fmin > 0, found {}", in.S_Fmin));
+  require(in.Q_v == 0 || (in.Q_v >= 3 && in.Q_v <= 16), "Q_v", fmt::format("expected an AGMA quality number 3..16, found {}", in.Q_v));
   require(in.reliability > 0.5 && in.reliability < 1.0, "reliability",
           fmt::format("expected a reliability in (0.5, 1), found {}", in.reliability));
   for (int i = 0; i < 2; ++i) {
@@ -265,10 +279,16 @@ PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairRes
   require(geometry_input.face_width > 0.0, "face_width", "the rating needs a face width b > 0 mm");
   const Mesh m = detail::mesh_of(geometry_input, geometry);
   PairRating r;
-  switch (in.method) {
-    case RatingMethod::iso6336: r = detail::rate_iso6336(m, in); break;
-    case RatingMethod::agma: r = detail::rate_agma(m, in); break;
-    case RatingMethod::lewis_hertz: r = detail::rate_lewis_hertz(m, in); break;
+  if (in.method == RatingMethod::iso6336 && in.quality > 0) {
+    RatingInput with_tolerances = in;
+    deviations_of_quality(m, with_tolerances);
+    r = detail::rate_iso6336(m, with_tolerances);
+  } else {
+    switch (in.method) {
+      case RatingMethod::iso6336: r = detail::rate_iso6336(m, in); break;
+      case RatingMethod::agma: r = detail::rate_agma(m, in); break;
+      case RatingMethod::lewis_hertz: r = detail::rate_lewis_hertz(m, in); break;
+    }
   }
   r.imposed = in.factors;
   detail::safety_warnings(in, r);

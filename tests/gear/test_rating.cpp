@@ -29,7 +29,7 @@ gg::GearPairInput tr_example1_geometry() {
   in.face_width = 100.0;
   in.h_fP = 1.4;
   in.rho_fP = 0.39;
-  in.center_distance = 500.0;
+  in.centre_distance = 500.0;
   in.x1 = 0.145;
   in.split = gg::ShiftSplit::user_x1;
   return in;
@@ -273,9 +273,11 @@ TEST(RatingBadInput, NamesTheField) {
   expect_field(load, "spectrum");
   load = tr_example1_load();
   load.f_pb = std::nan("");
+  load.quality = 0;  // no grade, no f_pb: K_v cannot be computed
   expect_field(load, "f_pb");
   load = tr_example1_load();
   load.factors = gg::ImposedFactors();
+  load.quality = 0;
   expect_field(load, "f_ma");
   auto flat = in;
   flat.face_width = 0.0;
@@ -285,4 +287,22 @@ TEST(RatingBadInput, NamesTheField) {
   } catch (const gg::RatingError& e) {
     EXPECT_EQ(e.field(), "face_width");
   }
+}
+
+TEST(RatingQuality, DeviationsFromTheIso1328Grade) {
+  // With only the grade, K_v, K_Halpha and K_Hbeta come from the ISO 1328-1:2013 tolerances:
+  // a finer grade gives smaller deviations and so smaller factors.
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = tr_example1_load();
+  load.factors = gg::ImposedFactors();
+  load.f_pb = load.f_falpha = std::nan("");
+  load.n_1 = 3000.0;
+  load.quality = 8;
+  const auto coarse = gg::rate_gear_pair(in, geo, load);
+  load.quality = 4;
+  const auto fine = gg::rate_gear_pair(in, geo, load);
+  EXPECT_GT(coarse.K_v, fine.K_v);
+  EXPECT_GT(coarse.K_Hbeta, fine.K_Hbeta);
+  EXPECT_GT(fine.K_v, 1.0);
 }

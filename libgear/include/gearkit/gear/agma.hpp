@@ -9,7 +9,7 @@ namespace gearkit::gear::agma {
 
 /// Dynamic factor K_v = ((A + sqrt(V_ft_min))/A)^B, B = 0.25 (12 - Q_v)^(2/3), A = 50 + 56 (1 - B)
 /// (Eq. 14-27) with V in m/s converted exactly (1 m/s = 196.85 ft/min); AGMA 2101's metric
-/// form rounds that to 200 V, 0.8 % more speed under the root.
+/// form rounds that to 200 V, 0.8 % more speed under the root. Q_v <= 12 (K_v = 1 at 12).
 double dynamic_factor(int Q_v, double V);
 
 /// The exact US form with the speed in ft/min: K_v = ((A + sqrt(V_ft_min))/A)^B (Eq. 14-27).

@@ -80,8 +80,12 @@ struct RatingInput {
   double K_A = 1.0;           ///< application factor (ISO 6336-6 Annex A), AGMA overload factor K_o
   double K_gamma = 1.0;       ///< mesh load factor (load sharing of planets), >= 1
   std::array<Material, 2> material;
-  int quality = 6;            ///< ISO 1328-1 flank tolerance class 1..11 (Y_DT, AGMA Q_v = 17 - class... see docs)
-  // Deviations, um (NaN: not given; then K_v, K_Halpha, K_Hbeta need them or an imposed factor).
+  /// ISO 1328-1:2013 flank tolerance class 1..11, 0 = not given. When given, the deviations
+  /// below that are not given are the tolerances of accuracy.hpp: f_pb = f_pT cos(alpha_t),
+  /// f_falpha = f_falphaT, f_Hbeta = f_ma = f_HbetaT (larger of both gears). Also feeds Y_DT and
+  /// the AGMA quality number Q_v = 17 - class when Q_v is not given.
+  int quality = 0;
+  // Deviations, um (NaN: not given; then K_v, K_Halpha, K_Hbeta need them, the quality or an imposed factor).
   double f_pb = std::numeric_limits<double>::quiet_NaN();      ///< transverse base pitch deviation (larger gear value)
   double f_falpha = std::numeric_limits<double>::quiet_NaN();  ///< profile form deviation
   double F_betax = std::numeric_limits<double>::quiet_NaN();   ///< initial equivalent misalignment (given directly)
