@@ -38,8 +38,7 @@ int run_demo_command(kin::CommandContext& context, const kin::PluginHost& host) 
   for (const auto& step : demo_steps()) {
     const kin::CommandSpec* spec = host.find_command(step.command);
     if (!spec) {
-      context.err << fmt::format("gearkit demo: the '{}' plugin is not loaded; see 'gearkit plugins'\n", step.command);
-      return 1;
+      throw io::InputError(fmt::format("demo: the '{}' plugin is not loaded; see 'gearkit plugins'", step.command));
     }
     std::vector<std::string> args;
     for (const auto& a : step.args) {
@@ -55,7 +54,7 @@ int run_demo_command(kin::CommandContext& context, const kin::PluginHost& host) 
     if (!step.report_file.empty())
       io::write_file_atomic((dir / step.report_file).string(), captured.str(), "--output");
     if (status != 0) {
-      context.err << fmt::format("gearkit demo: step '{}' failed with status {}\n", step.title, status);
+      context.err << fmt::format("gearkit: demo: step '{}' failed with status {}\n", step.title, status);
       return 1;
     }
   }

@@ -46,7 +46,7 @@ io::DriverRange parse_sweep(const std::string& text, io::Quantity q, std::string
   std::stringstream ss(text);
   for (std::string part; std::getline(ss, part, ':');) parts.push_back(part);
   if (parts.size() != 3)
-    io::fail_option("--sweep", fmt::format("expected START:END:STEP (e.g. 0:360:1), found '{}'", text));
+    io::fail_option("--sweep", fmt::format("expected START:END:STEP (e.g. 0:360:1), found {}", io::quote(text)));
   io::DriverRange r;
   try {
     r.start = io::parse_quantity_si(parts[0], q, unit);
@@ -55,7 +55,7 @@ io::DriverRange parse_sweep(const std::string& text, io::Quantity q, std::string
   } catch (const std::exception& e) {
     io::fail_option("--sweep", e.what());
   }
-  if (!(r.step > 0.0)) io::fail_option("--sweep", fmt::format("expected a STEP > 0, found '{}'", parts[2]));
+  if (!(r.step > 0.0)) io::fail_option("--sweep", fmt::format("expected a STEP > 0, found {}", io::quote(parts[2])));
   if (r.start == r.end) io::fail_option("--sweep", "expected START different from END");
   if (std::abs(r.end - r.start) / r.step > 1e6) io::fail_option("--sweep", "expected at most 1e6 steps");
   return r;
@@ -438,14 +438,14 @@ int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
     driver = -1;
     for (std::size_t k = 0; k < mech.drivers.size(); ++k)
       if (mech.drivers[k].name == name) driver = static_cast<int>(k);
-    if (driver < 0) io::fail_option("--driver", fmt::format("expected the name of a driver of the model, found '{}'", name));
+    if (driver < 0) io::fail_option("--driver", fmt::format("expected the name of a driver of the model, found {}", io::quote(name)));
   }
   if (vm.count("outputs")) {
     std::vector<kin::Output> chosen;
     std::stringstream ss(vm["outputs"].as<std::string>());
     for (std::string name; std::getline(ss, name, ',');) {
       auto it = std::find_if(mech.outputs.begin(), mech.outputs.end(), [&](const kin::Output& o) { return o.name == name; });
-      if (it == mech.outputs.end()) io::fail_option("--outputs", fmt::format("expected names of outputs defined in the model, found '{}'", name));
+      if (it == mech.outputs.end()) io::fail_option("--outputs", fmt::format("expected names of outputs defined in the model, found {}", io::quote(name)));
       chosen.push_back(*it);
     }
     mech.outputs = chosen;
@@ -484,15 +484,16 @@ int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
   }
   const KinAnalysis analysis = analyse(mech, data, driver, at, sweeping ? &range : nullptr);
   io::Report report = build_report(mech, analysis);
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (vm.count("plot")) {
     if (analysis.positions.empty()) report.warnings.push_back("no positions to plot; --plot file not written");
-    else io::write_file_atomic(vm["plot"].as<std::string>(), plot_svg(mech, analysis), "--plot");
+    else outputs.add("--plot", vm["plot"].as<std::string>(), plot_svg(mech, analysis));
   }
   if (vm.count("animate")) {
     if (analysis.positions.empty()) report.warnings.push_back("no positions to animate; --animate file not written");
-    else io::write_file_atomic(vm["animate"].as<std::string>(), animation_svg(mech, analysis), "--animate");
+    else outputs.add("--animate", vm["animate"].as<std::string>(), animation_svg(mech, analysis));
   }
-  return io::emit(report, common, context.out);
+  return io::emit(report, common, outputs);
 }
 
 }  // namespace gearkit::cli

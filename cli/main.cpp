@@ -1,6 +1,7 @@
 // gearkit: command-line entry point. Global options, plugin loading, dispatch to a built-in or
-// plugin command, and the error policy: bad input -> one line on stderr and status 2; an
-// internal failure -> one line and status 1; never a backtrace.
+// plugin command, and the error policy of docs/cli.md: bad input -> one line on stderr and
+// status 2; an internal failure (a bug, out of memory) -> one line and status 1; warnings are
+// lines "gearkit: warning: ..."; never a backtrace or an abort.
 #include "builtin_commands.hpp"
 #include "kin_command.hpp"
 
@@ -10,11 +11,18 @@
 #include <boost/program_options.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
 #include <iostream>
 #include <map>
 #include <new>
 #include <string>
+#include <string_view>
 #include <vector>
+#include <unistd.h>
 
 namespace {
 
@@ -37,6 +45,67 @@ constexpr Builtin kBuiltins[] = {
     {"plugins", "List the loaded plugins with their versions, commands and element types"},
 };
 
+/// The stderr rule (docs/cli.md, "Messages and exit status"): every problem is one line that
+/// starts "gearkit: "; line breaks and control characters inside a message are shown escaped and
+/// a message is cut at 500 characters, so a bad value can never flood the terminal.
+void print_diagnostic(std::ostream& err, std::string_view message) {
+  while (message.starts_with("gearkit: ")) message.remove_prefix(9);  // never "gearkit: gearkit: "
+  std::string line = gearkit::io::quote(message, 500);
+  err << "gearkit: " << std::string_view(line).substr(1, line.size() - 2) << "\n";
+  err.flush();
+}
+
+/// Standard output redirected to a full disk or a closed pipe is the environment's problem,
+/// reported like bad input (status 2), never as an internal error.
+void flush_standard_output() {
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout)
+    throw gearkit::io::InputError(errno != 0 ? fmt::format("cannot write to standard output: {}", std::strerror(errno))
+                                             : "cannot write to standard output");
+}
+
+// Out of memory must end as "gearkit: internal error: out of memory" and status 1. The first
+// failed allocation releases a reserve so that the unwinding that follows can allocate
+// (nlohmann::json's destructor does, in a noexcept context: without the reserve a std::bad_alloc
+// there calls std::terminate and the process aborts with status 134).
+void* memory_reserve = nullptr;
+
+void on_allocation_failure() {
+  if (memory_reserve) {
+    std::free(memory_reserve);
+    memory_reserve = nullptr;
+  }
+  throw std::bad_alloc();
+}
+
+// Anything that still reaches std::terminate (an exception escaping a noexcept function) is
+// reported as one line and status 1, never as an abort with a core dump.
+[[noreturn]] void on_terminate() {
+  const char* what = "unknown exception";
+  bool oom = false;
+  try {
+    if (auto e = std::current_exception()) std::rethrow_exception(e);
+  } catch (const std::bad_alloc&) {
+    oom = true;
+  } catch (const std::exception& e) {
+    what = e.what();
+  } catch (...) {
+  }
+  const char* prefix = "gearkit: internal error: ";
+  ::write(STDERR_FILENO, prefix, std::strlen(prefix));
+  if (oom) what = "out of memory";
+  ::write(STDERR_FILENO, what, std::strlen(what));
+  ::write(STDERR_FILENO, "\n", 1);
+  std::_Exit(1);
+}
+
+void install_out_of_memory_handling() {
+  memory_reserve = std::malloc(std::size_t{32} << 20);
+  std::set_new_handler(on_allocation_failure);
+  std::set_terminate(on_terminate);
+}
+
 void print_help(std::ostream& out, const po::options_description& global, const kin::PluginHost& host) {
   out << kUsage << "\n\n" << "gearkit " << GEARKIT_VERSION_STRING
       << ": gear and transmission design around a planar kinematics solver.\n\n"
@@ -45,7 +114,7 @@ void print_help(std::ostream& out, const po::options_description& global, const 
   for (const auto& b : kBuiltins) all[b.name] = b.summary;
   for (const auto& [name, spec] : host.commands()) all.emplace(name, spec.summary);
   for (const auto& [name, summary] : all) out << fmt::format("  {:<10} {}\n", name, summary);
-  out << "\nEvery command takes --help, --format text|json|csv|md and --output FILE.\n"
+  out << "\nEvery command but demo takes --help, --format text|json|csv|md, --output FILE and --strict.\n"
          "Exit status: 0 success, 2 bad input or usage, 3 warnings under --strict, 1 internal failure.\n";
 }
 
@@ -96,14 +165,14 @@ int run(int argc, char** argv) {
   }
   auto locations = kin::default_plugin_locations(kin::current_executable());
   std::vector<kin::PluginError> load_errors = host.load_all(locations);
+  // A plugin that fails to load is a warning for every command but `plugins`, whose job is to
+  // say so: there each failure is an error line and the status is 2 (see after dispatch).
   if (command != "plugins")
-    for (const auto& e : load_errors) std::cerr << "gearkit: warning: " << e.what() << "\n";
+    for (const auto& e : load_errors) print_diagnostic(std::cerr, fmt::format("warning: {}", e.what()));
 
   if (vm.count("help") || command.empty()) {
-    if (command.empty() && !vm.count("help")) {
-      std::cerr << "gearkit: expected a command; see 'gearkit --help'\n";
-      return 2;
-    }
+    if (command.empty() && !vm.count("help"))
+      throw gearkit::io::InputError("expected a command; see 'gearkit --help'");
     print_help(std::cout, global, host);
     return 0;
   }
@@ -118,7 +187,13 @@ int run(int argc, char** argv) {
   }
 
   kin::CommandContext context{command_args, std::cout, std::cerr};
-  if (command == "plugins") return cli::run_plugins_command(context, host, load_errors, locations);
+  if (command == "plugins") {
+    int status = cli::run_plugins_command(context, host, load_errors, locations);
+    if (load_errors.empty()) return status;
+    for (const auto& e : load_errors) print_diagnostic(std::cerr, e.what());
+    throw gearkit::io::InputError(fmt::format("{} plugin file(s) could not be loaded; see the lines above",
+                                              load_errors.size()));
+  }
   if (command == "demo") return cli::run_demo_command(context, host);
   if (command == "kin") return cli::run_kin_command(context, host);
   if (const kin::CommandSpec* spec = host.find_command(command)) return spec->run(context);
@@ -128,35 +203,33 @@ int run(int argc, char** argv) {
   for (const auto& [name, spec] : host.commands()) names.push_back(name);
   std::sort(names.begin(), names.end());
   throw gearkit::io::InputError(
-      fmt::format("unknown command '{}'; expected one of: {}", command, fmt::join(names, ", ")));
+      fmt::format("unknown command {}; expected one of: {}", gearkit::io::quote(command), fmt::join(names, ", ")));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  install_out_of_memory_handling();
   try {
     int status = run(argc, argv);
-    std::cout.flush();
-    if (!std::cout) {
-      std::cerr << "gearkit: cannot write to standard output\n";
-      return 1;
-    }
+    flush_standard_output();
     return status;
   } catch (const gearkit::io::InputError& e) {
+    // The report may be half-streamed to standard output: it goes out before the reason.
     std::cout.flush();
-    std::cerr << "gearkit: " << e.what() << "\n";
+    print_diagnostic(std::cerr, e.what());
     return 2;
   } catch (const gearkit::kin::PluginError& e) {
-    std::cerr << "gearkit: " << e.what() << "\n";
+    print_diagnostic(std::cerr, e.what());
     return 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "gearkit: internal error: out of memory\n";
+    print_diagnostic(std::cerr, "internal error: out of memory");
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "gearkit: internal error: " << e.what() << "\n";
+    print_diagnostic(std::cerr, fmt::format("internal error: {}", e.what()));
     return 1;
   } catch (...) {
-    std::cerr << "gearkit: internal error: unknown exception\n";
+    print_diagnostic(std::cerr, "internal error: unknown exception");
     return 1;
   }
 }

@@ -1,10 +1,11 @@
 #include <gearkit/io/command_line.hpp>
 
-#include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/error.hpp>
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <ostream>
 
 namespace gearkit::io {
@@ -15,13 +16,77 @@ void add_common_options(po::options_description& desc) {
       ("format", po::value<std::string>()->default_value("text")->value_name("text|json|csv|md"),
        "output format")
       ("output,o", po::value<std::string>()->value_name("FILE"),
-       "write the report to FILE (atomically) instead of standard output")
+       "write the report to FILE instead of standard output ('-'); see docs/cli.md, Output files")
       ("strict", "exit with status 3 when the report has warnings");
 }
+
+namespace {
+
+/// The names of the positional arguments ("file"), in order.
+std::vector<std::string> positional_names(const po::positional_options_description& positional) {
+  std::vector<std::string> names;
+  const unsigned count = std::min(positional.max_total_count(), 8u);  // unbounded is UINT_MAX
+  for (unsigned i = 0; i < count; ++i) {
+    const std::string& name = positional.name_for_position(i);
+    if (names.empty() || names.back() != name) names.push_back(name);
+  }
+  return names;
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+/// Boost.Program_options quotes whole values ("the argument ('<1 MB>') for option '--at' is
+/// invalid"): shorten every quoted part and show control characters, so the message stays one
+/// short line.
+std::string shorten_quoted_parts(std::string_view message) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < message.size()) {
+    std::size_t open = message.find('\'', i);
+    std::size_t close = open == std::string_view::npos ? open : message.find('\'', open + 1);
+    if (close == std::string_view::npos) {
+      std::string rest = quote(message.substr(i), 300);
+      out += rest.substr(1, rest.size() - 2);
+      break;
+    }
+    std::string before = quote(message.substr(i, open - i), 300);
+    out += before.substr(1, before.size() - 2) + quote(message.substr(open + 1, close - open - 1));
+    i = close + 1;
+  }
+  return out;
+}
+
+/// "option '--dxf'" or, for a positional argument, "the FILE argument".
+std::string label(const std::string& name, const std::vector<std::string>& positionals) {
+  if (std::find(positionals.begin(), positionals.end(), name) != positionals.end())
+    return fmt::format("the {} argument", upper(name));
+  return fmt::format("option '--{}'", name);
+}
+
+/// An empty value ("--output ''") would otherwise mean "not given" to most commands.
+void reject_empty_values(const po::variables_map& vm, const po::options_description& desc,
+                         const std::vector<std::string>& positionals) {
+  for (const auto& [name, value] : vm) {
+    if (value.defaulted() || value.empty()) continue;
+    const po::option_description* option = desc.find_nothrow(name, false);
+    if (option && option->semantic()->max_tokens() == 0) continue;  // a flag such as --strict
+    bool empty = false;
+    if (const auto* s = boost::any_cast<std::string>(&value.value())) empty = s->empty();
+    else if (const auto* v = boost::any_cast<std::vector<std::string>>(&value.value()))
+      empty = std::any_of(v->begin(), v->end(), [](const std::string& x) { return x.empty(); });
+    if (empty) throw InputError(fmt::format("{}: expected a value, found an empty one", label(name, positionals)));
+  }
+}
+
+}  // namespace
 
 bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
                         const po::positional_options_description& positional, po::variables_map& vm,
                         std::string_view usage, std::ostream& out) {
+  const std::vector<std::string> positionals = positional_names(positional);
   try {
     po::store(po::command_line_parser(args).options(desc).positional(positional).run(), vm);
     if (vm.count("help")) {
@@ -30,13 +95,17 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
     }
     po::notify(vm);
   } catch (const po::too_many_positional_options_error&) {
-    // Name the first word nobody asked for.
     throw InputError(fmt::format("unexpected argument; usage: {}", usage));
-  } catch (const po::error_with_option_name& e) {
-    throw InputError(e.what());
+  } catch (const po::required_option& e) {
+    std::string name = e.get_option_name();
+    name.erase(0, name.find_first_not_of('-'));
+    if (std::find(positionals.begin(), positionals.end(), name) != positionals.end())
+      throw InputError(fmt::format("expected the {} argument, found none; usage: {}", upper(name), usage));
+    throw InputError(shorten_quoted_parts(e.what()));
   } catch (const po::error& e) {
-    throw InputError(e.what());
+    throw InputError(shorten_quoted_parts(e.what()));
   }
+  reject_empty_values(vm, desc, positionals);
   if (vm.count("format")) parse_format(vm["format"].as<std::string>());
   return true;
 }
@@ -49,13 +118,19 @@ CommonOptions common_options(const po::variables_map& vm) {
   return o;
 }
 
-int emit(const Report& report, const CommonOptions& options, std::ostream& out) {
-  if (options.output.empty()) {
-    render(report, options.format, out);
-  } else {
-    write_file_atomic(options.output, render(report, options.format), "--output");
-  }
+int exit_status(const Report& report, const CommonOptions& options) {
   return options.strict && !report.warnings.empty() ? 3 : 0;
+}
+
+int emit(const Report& report, const CommonOptions& options, OutputSet& outputs) {
+  outputs.add("--output", options.output, render(report, options.format));
+  outputs.commit();
+  return exit_status(report, options);
+}
+
+int emit(const Report& report, const CommonOptions& options, std::ostream& out) {
+  OutputSet outputs(out);
+  return emit(report, options, outputs);
 }
 
 }  // namespace gearkit::io

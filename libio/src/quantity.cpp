@@ -1,5 +1,7 @@
 #include <gearkit/io/quantity.hpp>
 
+#include <gearkit/io/error.hpp>
+
 #include <fmt/format.h>
 
 #include <array>
@@ -111,7 +113,7 @@ bool compatible(const Dim& found, const Dim& expected) {
   return found.A == 0 || found.A == expected.A;
 }
 
-std::string quoted(std::string_view s) { return fmt::format("'{}'", s); }
+std::string quoted(std::string_view s) { return quote(s); }
 
 bool is_space(char c) { return c == ' ' || c == '\t'; }
 

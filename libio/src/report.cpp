@@ -122,7 +122,7 @@ Format parse_format(std::string_view s) {
   if (s == "json") return Format::json;
   if (s == "csv") return Format::csv;
   if (s == "md" || s == "markdown") return Format::md;
-  fail_option("--format", fmt::format("expected text, json, csv or md, found '{}'", s));
+  fail_option("--format", fmt::format("expected text, json, csv or md, found {}", quote(s)));
 }
 
 void render(const Report& report, Format format, std::ostream& out) {

@@ -1,5 +1,7 @@
 #include <gearkit/io/yaml_model.hpp>
 
+#include <gearkit/io/output.hpp>
+
 #include <fmt/format.h>
 #include <yaml-cpp/depthguard.h>
 
@@ -54,11 +56,7 @@ SourceMark mark_of_offset(std::string_view text, std::size_t offset, const std::
 std::string describe_node(const YAML::Node& node) {
   switch (node.Type()) {
     case YAML::NodeType::Null: return "nothing";
-    case YAML::NodeType::Scalar: {
-      std::string s = node.Scalar();
-      if (s.size() > 40) s = s.substr(0, 37) + "...";
-      return fmt::format("'{}'", s);
-    }
+    case YAML::NodeType::Scalar: return quote(node.Scalar());
     case YAML::NodeType::Sequence: return "a list";
     case YAML::NodeType::Map: return "a mapping";
     case YAML::NodeType::Undefined: return "nothing";
@@ -71,8 +69,9 @@ YamlDocument parse_checked(const std::string& text, const std::string& name) {
   if (!valid_utf8(text, bad))
     fail_at(mark_of_offset(text, bad, name), "expected a YAML text file (UTF-8), found binary data");
   YamlDocument doc{name, {}};
+  std::vector<YAML::Node> documents;
   try {
-    doc.root = YAML::Load(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::DeepRecursion& e) {
     fail_at({name, e.mark.line + 1, e.mark.column + 1},
             fmt::format("expected YAML nested at most {} levels deep, found deeper nesting", e.depth()));
@@ -81,6 +80,10 @@ YamlDocument parse_checked(const std::string& text, const std::string& name) {
   } catch (const YAML::Exception& e) {
     fail_at({name, e.mark.line + 1, e.mark.column + 1}, fmt::format("malformed YAML: {}", e.msg));
   }
+  if (!documents.empty()) doc.root = documents.front();
+  for (std::size_t i = 1; i < documents.size(); ++i)
+    if (documents[i].IsDefined() && !documents[i].IsNull())
+      fail_at(mark_of(documents[i], name), "expected one YAML document per file, found a second one after '---'");
   if (!doc.root.IsDefined() || doc.root.IsNull())
     fail_at({name, 0, 0}, "expected a YAML model, found an empty file");
   return doc;
@@ -103,6 +106,7 @@ YamlDocument load_yaml_file(const std::string& path, std::uintmax_t max_bytes) {
   std::uintmax_t size = fs::file_size(path, ec);
   if (!ec && size > max_bytes)
     fail_at({path, 0, 0}, fmt::format("expected a model file of at most {} MiB, found {} bytes", max_bytes >> 20, size));
+  note_input_file(path);  // no output of this run may replace it
   std::ifstream in(path, std::ios::binary);
   if (!in) fail_at({path, 0, 0}, fmt::format("expected a readable file, found: {}", std::strerror(errno)));
   std::ostringstream buffer;
@@ -199,7 +203,7 @@ long long MapReader::integer(const std::string& key) {
   YAML::Node n = get(key);
   std::string text = scalar_text(n, file_, fmt::format("a whole number for '{}'", key));
   long long v = 0;
-  if (!parse_integer(text, v)) fail(key, fmt::format("'{}': expected a whole number, found '{}'", key, text));
+  if (!parse_integer(text, v)) fail(key, fmt::format("'{}': expected a whole number, found {}", key, quote(text)));
   return v;
 }
 
@@ -241,7 +245,7 @@ std::string MapReader::choice(const std::string& key, const std::vector<std::str
   std::string v = string(key);
   for (const auto& c : choices)
     if (c == v) return v;
-  fail(key, fmt::format("'{}': expected one of {}, found '{}'", key, fmt::join(choices, ", "), v));
+  fail(key, fmt::format("'{}': expected one of {}, found {}", key, fmt::join(choices, ", "), quote(v)));
 }
 
 bool MapReader::boolean(const std::string& key) {
@@ -249,7 +253,7 @@ bool MapReader::boolean(const std::string& key) {
   std::string text = scalar_text(n, file_, fmt::format("true or false for '{}'", key));
   if (text == "true" || text == "yes" || text == "on") return true;
   if (text == "false" || text == "no" || text == "off") return false;
-  fail(key, fmt::format("'{}': expected true or false, found '{}'", key, text));
+  fail(key, fmt::format("'{}': expected true or false, found {}", key, quote(text)));
 }
 
 bool MapReader::boolean_or(const std::string& key, bool default_value) {

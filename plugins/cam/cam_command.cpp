@@ -96,20 +96,21 @@ int run_cam_command(kin::CommandContext& context) {
   result.jumps = gc::continuity_check(model.design.program);
   result.samples = sample_turn(model);
 
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (!options.dxf.empty()) {
     io::DxfOptions dxf;
     dxf.lines_and_arcs_only = options.dxf_lines_arcs;
-    io::write_file_atomic(options.dxf, io::to_dxf(cam_drawing(model, result.profile, false), dxf), "--dxf");
+    outputs.add("--dxf", options.dxf, io::to_dxf(cam_drawing(model, result.profile, false), dxf));
   }
   if (!options.svg.empty()) {
     io::SvgOptions svg;
     svg.title = fmt::format("gearkit cam: {}", model.name.empty() ? options.file : model.name);
-    io::write_file_atomic(options.svg, io::to_svg(cam_drawing(model, result.profile, true), svg), "--svg");
+    outputs.add("--svg", options.svg, io::to_svg(cam_drawing(model, result.profile, true), svg));
   }
-  if (!options.plot.empty()) io::write_file_atomic(options.plot, io::to_svg(motion_plot(model, result.samples)), "--plot");
-  if (!options.csv.empty()) io::write_file_atomic(options.csv, motion_csv(model, result.samples), "--csv");
+  if (!options.plot.empty()) outputs.add("--plot", options.plot, io::to_svg(motion_plot(model, result.samples)));
+  if (!options.csv.empty()) outputs.add("--csv", options.csv, motion_csv(model, result.samples));
 
-  return io::emit(cam_report(model, result, options.file), common, context.out);
+  return io::emit(cam_report(model, result, options.file), common, outputs);
 }
 
 }  // namespace gearkit::plugins::cam

@@ -71,16 +71,17 @@ int run_dyn_command(kin::CommandContext& context) {
   if (model.motion) add_motion(model, out);
   if (model.reduced_force) add_reduced_force(model, out);
 
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (vm.count("plot")) {
     const io::Plot* plot = out.torque_plot ? &*out.torque_plot : (out.speed_plot ? &*out.speed_plot : nullptr);
-    if (!plot) io::fail_option("plot", "this model asks for no flywheel or motion, so there is nothing to plot");
-    io::write_file_atomic(vm["plot"].as<std::string>(), io::to_svg(*plot), "--plot");
+    if (!plot) io::fail_option("--plot", "this model asks for no flywheel or motion, so there is nothing to plot");
+    outputs.add("--plot", vm["plot"].as<std::string>(), io::to_svg(*plot));
   }
   if (vm.count("speed-plot")) {
-    if (!out.speed_plot) io::fail_option("speed-plot", "this model has no 'motion' question, so no speed to plot");
-    io::write_file_atomic(vm["speed-plot"].as<std::string>(), io::to_svg(*out.speed_plot), "--speed-plot");
+    if (!out.speed_plot) io::fail_option("--speed-plot", "this model has no 'motion' question, so no speed to plot");
+    outputs.add("--speed-plot", vm["speed-plot"].as<std::string>(), io::to_svg(*out.speed_plot));
   }
-  return io::emit(out.report, common, context.out);
+  return io::emit(out.report, common, outputs);
 }
 
 }  // namespace gearkit::plugins::dyn

@@ -56,16 +56,17 @@ int run_gear_command(kin::CommandContext& context) {
     io::fail_option(fmt::format("--{}", option_for_field(e.field())), e.what());
   }
 
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (!options.svg.empty() || !options.dxf.empty()) {
     const io::Drawing drawing = gear_drawing(options.input, result, options.draw);
     if (!options.svg.empty()) {
       io::SvgOptions svg;
       svg.title = fmt::format("gearkit gear: z1 = {}, z2 = {}", options.input.z1, options.input.z2);
-      io::write_file_atomic(options.svg, io::to_svg(drawing, svg), "--svg");
+      outputs.add("--svg", options.svg, io::to_svg(drawing, svg));
     }
-    if (!options.dxf.empty()) io::write_file_atomic(options.dxf, io::to_dxf(drawing), "--dxf");
+    if (!options.dxf.empty()) outputs.add("--dxf", options.dxf, io::to_dxf(drawing));
   }
-  return io::emit(gear_report(options.input, result), common, context.out);
+  return io::emit(gear_report(options.input, result), common, outputs);
 }
 
 }  // namespace gearkit::plugins::gear

@@ -31,7 +31,7 @@ int teeth(const io::po::variables_map& vm, const char* key) {
   int value = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (s.empty() || ec != std::errc() || end != s.data() + s.size()) {
-    fail(key, fmt::format("expected a whole number of teeth, found '{}'", s));
+    fail(key, fmt::format("expected a whole number of teeth, found {}", io::quote(s)));
   }
   if (value <= 0) fail(key, fmt::format("expected a number of teeth >= 1, found {}", value));
   if (value > 100000) fail(key, fmt::format("expected at most 100000 teeth, found {}", value));
@@ -147,7 +147,7 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
     const std::map<std::string, gg::ShiftSplit> splits = {
         {"balanced", gg::ShiftSplit::balanced_sliding}, {"proportional", gg::ShiftSplit::proportional}, {"user", gg::ShiftSplit::user_x1}};
     const auto it = splits.find(s);
-    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional or user, found '{}'", s));
+    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional or user, found {}", io::quote(s)));
     if (given(vm, "x1") && it->second != gg::ShiftSplit::user_x1) {
       fail("split", fmt::format("'{}' contradicts --x1 (a given x1 means the user split)", s));
     }
@@ -187,7 +187,7 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
   if (given(vm, "draw")) {
     o.draw = text_of(vm, "draw");
     if (o.draw != "pair" && o.draw != "gear1" && o.draw != "gear2") {
-      fail("draw", fmt::format("expected pair, gear1 or gear2, found '{}'", o.draw));
+      fail("draw", fmt::format("expected pair, gear1 or gear2, found {}", io::quote(o.draw)));
     }
     if (o.svg.empty() && o.dxf.empty()) fail("draw", "needs --svg or --dxf");
   }

@@ -385,7 +385,7 @@ int run_train_command(kin::CommandContext& context) {
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
   if (!vm.count("file"))
-    throw io::InputError("gearkit train: expected a train file (gearkit train FILE [options]; see --help), found none");
+    throw io::InputError("expected the FILE argument, found none; usage: gearkit train FILE [options] (see --help)");
 
   double default_efficiency = 1.0;
   if (vm.count("mesh-efficiency")) {

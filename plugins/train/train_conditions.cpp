@@ -1,5 +1,6 @@
 #include "train_conditions.hpp"
 
+#include <gearkit/io/error.hpp>
 #include <gearkit/io/quantity.hpp>
 
 #include <fmt/format.h>
@@ -28,7 +29,7 @@ std::string member_list(const gt::TrainModel& model) {
 gt::MemberId parse_member(const gt::TrainModel& model, const std::string& name, const ConditionFail& fail) {
   const std::string n = trim(name);
   if (const auto id = model.find_member(n)) return *id;
-  fail(fmt::format("expected a member of the train ({}), found '{}'", member_list(model), n));
+  fail(fmt::format("expected a member of the train ({}), found {}", member_list(model), io::quote(n)));
   throw std::logic_error("ConditionFail returned");
 }
 
@@ -39,10 +40,10 @@ gt::Condition parse_fix(const gt::TrainModel& model, const std::string& text, co
 
 gt::Condition parse_couple(const gt::TrainModel& model, const std::string& text, const ConditionFail& fail) {
   const auto eq = text.find('=');
-  if (eq == std::string::npos) fail(fmt::format("expected two members as A=B, found '{}'", text));
+  if (eq == std::string::npos) fail(fmt::format("expected two members as A=B, found {}", io::quote(text)));
   const gt::MemberId a = parse_member(model, text.substr(0, eq), fail);
   const gt::MemberId b = parse_member(model, text.substr(eq + 1), fail);
-  if (a == b) fail(fmt::format("expected two different members, found '{}'", text));
+  if (a == b) fail(fmt::format("expected two different members, found {}", io::quote(text)));
   return gt::Condition{gt::Condition::Kind::couple, a, b,
                        "couple w_" + model.member(a).name + " = w_" + model.member(b).name};
 }
@@ -68,7 +69,7 @@ std::pair<gt::MemberId, double> parse_member_quantity(const gt::TrainModel& mode
                                                       io::Quantity quantity, std::string_view default_unit,
                                                       const ConditionFail& fail) {
   const auto eq = text.find('=');
-  if (eq == std::string::npos) fail(fmt::format("expected MEMBER=VALUE, found '{}'", text));
+  if (eq == std::string::npos) fail(fmt::format("expected MEMBER=VALUE, found {}", io::quote(text)));
   const gt::MemberId m = parse_member(model, text.substr(0, eq), fail);
   if (m == gt::ground) fail("expected a moving member, found 'ground'");
   try {

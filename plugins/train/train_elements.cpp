@@ -27,7 +27,7 @@ double tooth_product(io::MapReader& r, const std::string& key) {
     char* end = nullptr;
     const long v = std::strtol(text.c_str(), &end, 10);
     if (end == text.c_str() || *end != '\0' || v < 1)
-      io::fail_at(io::mark_of(z, r.file()), fmt::format("expected a number of teeth >= 1, found '{}'", text));
+      io::fail_at(io::mark_of(z, r.file()), fmt::format("expected a number of teeth >= 1, found {}", io::quote(text)));
     p *= static_cast<double>(v);
   }
   return p;

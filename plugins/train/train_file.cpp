@@ -28,7 +28,7 @@ std::string member_name(const YAML::Node& node, const std::string& file, const s
   const std::string name = io::scalar_text(node, file, what);
   if (name.find('=') != std::string::npos || name.find_first_of(" \t") != std::string::npos)
     io::fail_at(io::mark_of(node, file),
-                fmt::format("expected a member name without spaces or '=', found '{}'", name));
+                fmt::format("expected a member name without spaces or '=', found {}", io::quote(name)));
   return name;
 }
 

@@ -36,15 +36,15 @@ gt::Rational parse_ratio(const std::string& text) {
   if (slash != std::string::npos) {
     long long num = 0, den = 0;
     if (!parse_long(text.substr(0, slash), num) || !parse_long(text.substr(slash + 1), den) || den == 0)
-      io::fail_option("--ratio", fmt::format("expected a fraction such as 1/16 or a decimal, found '{}'", text));
+      io::fail_option("--ratio", fmt::format("expected a fraction such as 1/16 or a decimal, found {}", io::quote(text)));
     return gt::make_rational(num, den);
   }
   try {
     const double v = io::parse_quantity_si(text, io::Quantity::dimensionless, "");
-    if (std::abs(v) > 1e9) io::fail_option("--ratio", fmt::format("expected a ratio below 1e9 in size, found '{}'", text));
+    if (std::abs(v) > 1e9) io::fail_option("--ratio", fmt::format("expected a ratio below 1e9 in size, found {}", io::quote(text)));
     return gt::rational_from_double(v, 1e-12 * std::max(1.0, std::abs(v)));
   } catch (const io::QuantityError& e) {
-    io::fail_option("--ratio", fmt::format("expected a fraction such as 1/16 or a decimal, found '{}'", text));
+    io::fail_option("--ratio", fmt::format("expected a fraction such as 1/16 or a decimal, found {}", io::quote(text)));
   }
 }
 
@@ -80,7 +80,7 @@ gt::PlanetaryMember member_option(const po::variables_map& vm, const char* key, 
   if (v == "sun") return gt::PlanetaryMember::sun;
   if (v == "carrier") return gt::PlanetaryMember::carrier;
   if (v == "ring") return gt::PlanetaryMember::ring;
-  io::fail_option(std::string("--") + key, fmt::format("expected sun, carrier or ring, found '{}'", v));
+  io::fail_option(std::string("--") + key, fmt::format("expected sun, carrier or ring, found {}", io::quote(v)));
 }
 
 std::string exact(long long num, long long den) {
@@ -207,7 +207,7 @@ int run_train_synth_command(kin::CommandContext& context, const std::vector<std:
   if (kind == "reducer") return run_reducer(context, vm, common);
   if (kind == "planetary") return run_planetary(context, vm, common);
   throw io::InputError(fmt::format(
-      "gearkit train synth: expected 'reducer' or 'planetary', found '{}' (see gearkit train synth --help)", kind));
+      "train synth: expected 'reducer' or 'planetary', found {} (see gearkit train synth --help)", io::quote(kind)));
 }
 
 }  // namespace gearkit::plugins::train

@@ -224,7 +224,7 @@ TEST(TrainCli, BadOptions) {
   EXPECT_EQ(missing.status, 2);
   const CliRun no_file = gearkit("train");
   EXPECT_EQ(no_file.status, 2);
-  EXPECT_NE(no_file.err.find("expected a train file"), std::string::npos) << no_file.err;
+  EXPECT_NE(no_file.err.find("expected the FILE argument, found none"), std::string::npos) << no_file.err;
   const CliRun modes = gearkit("train " + example("simple_planetary.yaml") + " --modes --input sun --input ring");
   EXPECT_EQ(modes.status, 2);
   EXPECT_NE(modes.err.find("option '--modes'"), std::string::npos) << modes.err;

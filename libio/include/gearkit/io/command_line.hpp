@@ -1,6 +1,7 @@
 #pragma once
 // Shared command-line handling for the built-in and plugin commands (Boost.Program_options):
 // the common options, --help, and option errors turned into InputError.
+#include <gearkit/io/output.hpp>
 #include <gearkit/io/report.hpp>
 #include <boost/program_options.hpp>
 #include <iosfwd>
@@ -14,7 +15,7 @@ namespace po = boost::program_options;
 /// Options every command has.
 struct CommonOptions {
   Format format = Format::text;
-  std::string output;  ///< --output FILE: the report goes to FILE (atomically) instead of stdout
+  std::string output = "-";  ///< --output FILE: where the report goes ("-": standard output)
   bool strict = false; ///< --strict: warnings make the exit status 3
 };
 
@@ -34,5 +35,13 @@ CommonOptions common_options(const po::variables_map& vm);
 /// Writes the report to stdout or --output and returns the exit status (0, or 3 under --strict
 /// when there are warnings).
 int emit(const Report& report, const CommonOptions& options, std::ostream& out);
+
+/// Adds the report to `outputs` (the command's other files: --svg, --dxf...), commits them all
+/// together and returns the exit status as above.
+/// @throws InputError when a destination is refused or a write fails; nothing is then changed.
+int emit(const Report& report, const CommonOptions& options, OutputSet& outputs);
+
+/// The exit status for a report: 3 under --strict when it has warnings, else 0.
+int exit_status(const Report& report, const CommonOptions& options);
 
 }  // namespace gearkit::io

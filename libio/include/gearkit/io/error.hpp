@@ -1,5 +1,6 @@
 #pragma once
 // Error policy: bad input is reported as one line "where: expected ..., found ..." and exit status 2.
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,6 +22,10 @@ struct SourceMark {
   int line = 0;
   int column = 0;
 };
+
+/// A value quoted for a one-line message: 'value', at most `max_chars` characters of it (then
+/// "..."), with line breaks, tabs and other control characters shown as \n, \t, \xNN.
+std::string quote(std::string_view value, std::size_t max_chars = 60);
 
 /// "file:line:column" (or just "file" when the line is unknown).
 std::string to_string(const SourceMark& mark);

@@ -1,0 +1,108 @@
+// The stderr rule of docs/cli.md ("Messages and exit status") end to end: one line per problem,
+// each starting "gearkit:", warnings marked, the reason last on status 2, bad values quoted
+// short (issue 11, items 2 and 11).
+#include <run_gearkit.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using gearkit::testing::count_lines;
+using gearkit::testing::run_gearkit;
+using gearkit::testing::shell_quote;
+using gearkit::testing::slurp;
+
+namespace {
+
+const std::string kTestPlugins = GEARKIT_TEST_PLUGIN_DIR;
+const fs::path kExamples = fs::path(GEARKIT_SOURCE_DIR) / "examples";
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// Status 2 and exactly one stderr line that contains `part` and is at most `max_length` long.
+void expect_one_line_error(const gearkit::testing::RunResult& r, const std::string& part, std::size_t max_length = 300) {
+  EXPECT_EQ(r.status, 2) << r.err.substr(0, 300);
+  ASSERT_EQ(count_lines(r.err), 1) << r.err.substr(0, 300);
+  EXPECT_EQ(r.err.rfind("gearkit: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(part), std::string::npos) << r.err.substr(0, 300);
+  EXPECT_LE(r.err.size(), max_length) << r.err.substr(0, 300);
+}
+
+fs::path write(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+}  // namespace
+
+TEST(Messages, BrokenPluginsAreWarningsForCommandsAndErrorsForThePluginsCommand) {
+  const std::string env = "GEARKIT_PLUGIN_PATH=" + shell_quote(kTestPlugins);
+  auto gear = run_gearkit("gear --z1 12 --z2 24 --module 3", env);
+  EXPECT_EQ(gear.status, 0) << gear.err;
+  auto warnings = lines_of(gear.err);
+  ASSERT_EQ(warnings.size(), 2u) << gear.err;  // test-wrong_api.so and test-missing_symbol.so
+  for (const auto& line : warnings) EXPECT_EQ(line.rfind("gearkit: warning: plugin '", 0), 0u) << line;
+
+  auto listing = run_gearkit("plugins", env);
+  EXPECT_EQ(listing.status, 2);
+  auto lines = lines_of(listing.err);
+  ASSERT_EQ(lines.size(), 3u) << listing.err;
+  EXPECT_NE(listing.err.find("test-wrong_api.so'"), std::string::npos) << listing.err;
+  EXPECT_NE(listing.err.find("test-missing_symbol.so'"), std::string::npos) << listing.err;
+  for (const auto& line : lines) EXPECT_EQ(line.rfind("gearkit: ", 0), 0u) << line;
+  EXPECT_EQ(lines.back(), "gearkit: 2 plugin file(s) could not be loaded; see the lines above");
+}
+
+TEST(Messages, AHugeOrMultiLineBadValueIsQuotedShortOnOneLine) {
+  auto dir = gearkit::testing::scratch_dir("messages_values");
+  std::string cam = slurp(kExamples / "cams" / "translating_roller_cycloidal.yaml");
+  std::string huge = cam;
+  huge.replace(huge.find("lift: 20 mm"), 11, "lift: " + std::string(1 << 20, 'x'));
+  expect_one_line_error(run_gearkit("cam " + shell_quote(write(dir / "huge.yaml", huge).string())), "xxx...");
+
+  // A block scalar spans several lines of the file; the message shows it on one.
+  std::string multi = "teeth: |\n  20\n  30\n  40\nmodule: 2 mm\n";
+  expect_one_line_error(run_gearkit("train " + shell_quote(write(dir / "multi.yaml", multi).string())), "gearkit: ");
+  std::string train = slurp(kExamples / "trains" / "simple_planetary.yaml");
+  std::string bad_name = train + "\nextra_key: \"line one\\nline two\\nline three\"\n";
+  expect_one_line_error(run_gearkit("train " + shell_quote(write(dir / "name.yaml", bad_name).string())), "extra_key");
+
+  expect_one_line_error(run_gearkit("kin " + shell_quote((kExamples / "mechanisms" / "four_bar.yaml").string()) +
+                                    " --at " + std::string(100000, '7') + "x"),
+                        "option '--at'");
+  expect_one_line_error(run_gearkit("gear --z1 " + std::string(100000, '1') + " --z2 20 --module 2"), "'--z1'");
+}
+
+TEST(Messages, OptionsAndArgumentsAreNamedAsTyped) {
+  // otm2015_p4_flywheel asks no 'motion' question: there is no speed to plot.
+  expect_one_line_error(run_gearkit("dyn " + shell_quote((kExamples / "dynamics" / "otm2015_p4_flywheel.yaml").string()) +
+                                    " --speed-plot /dev/null"),
+                        "option '--speed-plot'");
+  expect_one_line_error(run_gearkit("cam"), "expected the FILE argument, found none");
+  expect_one_line_error(run_gearkit("train"), "expected the FILE argument, found none");
+  auto synth = run_gearkit("train synth gearbox --ratio 3");
+  expect_one_line_error(synth, "train synth: expected 'reducer' or 'planetary'");
+  EXPECT_EQ(synth.err.find("gearkit: gearkit"), std::string::npos) << synth.err;
+  expect_one_line_error(run_gearkit("frobnicate"), "unknown command 'frobnicate'");
+}
+
+TEST(Messages, ASecondYamlDocumentIsAnErrorAtItsPosition) {
+  auto dir = gearkit::testing::scratch_dir("messages_documents");
+  std::string train = slurp(kExamples / "trains" / "simple_planetary.yaml");
+  fs::path two = write(dir / "two.yaml", train + "---\nmembers: [x]\n");
+  int line = count_lines(train) + 2;
+  expect_one_line_error(run_gearkit("train " + shell_quote(two.string()) + " --fix ring --input sun=100rpm"),
+                        two.string() + ":" + std::to_string(line) + ":");
+  // An empty document after the end marker holds nothing to ignore.
+  fs::path trailing = write(dir / "trailing.yaml", train + "---\n");
+  auto ok = run_gearkit("train " + shell_quote(trailing.string()) + " --fix ring --input sun=100rpm");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+}
