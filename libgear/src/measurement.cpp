@@ -88,6 +88,28 @@ double dimension_over_pins(const ToothData& g, double D_M) {
   return std::fabs(across + D_M);
 }
 
+double pin_protrusion(const ToothData& g, double D_M, double d_a) {
+  const double d_M = std::fabs(g.d_b / std::cos(pin_centre_pressure_angle(g, D_M)));
+  return g.z > 0 ? 0.5 * (d_M + D_M - std::fabs(d_a)) : 0.5 * (std::fabs(d_a) - (d_M - D_M));
+}
+
+double pin_diameter_flush_with_tip(const ToothData& g, double d_a) {
+  if (g.z < 0) throw std::domain_error("pin diameter range: external gears only (a ring's usable flank depends on its cutter)");
+  // Contact just above the base circle (the smallest pin that still touches the involute) and at
+  // the tip circle bracket the answer; the protrusion is monotonic in D_M.
+  double lo = pin_diameter_for_contact_at(g, g.d_b * 1.000001);
+  double hi = pin_diameter_for_contact_at(g, d_a);
+  if (pin_protrusion(g, hi, d_a) < 0.0) {
+    throw std::domain_error("pin diameter: no pin touching the flanks stands out of the tip circle");
+  }
+  if (pin_protrusion(g, lo, d_a) >= 0.0) return lo;
+  for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (pin_protrusion(g, mid, d_a) < 0.0 ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 namespace {
 
 // Diameter of the osculating circle of the reference cylinder's normal section at the tooth:

@@ -83,3 +83,44 @@ TEST(Backlash, BaseCirclesOutOfReach) {
   in.a = 40.0;
   EXPECT_THROW(gg::circumferential_backlash(in), std::domain_error);
 }
+
+TEST(BacklashRange, ExternalPairMatchesTheLinearRules) {
+  // Two methods: the exact states of backlash_range against the linear rules of DIN 3967 /
+  // ISO 21771-2, j_n = -(A_sn1 + A_sn2) cos(alpha_n) + 2 A_a sin(alpha_wt) cos(beta_b).
+  for (double beta : {0.0, 15.0 * kDeg}) {
+    const gg::BacklashInput in = nominal(19, 53, 2.0, beta, 0.1, -0.1);
+    const gg::PairLimits l{-0.04, -0.09, -0.05, -0.11, 0.02, -0.02};
+    const auto r = gg::backlash_range(in, beta, l);
+    const double a_wt = gg::working_pressure_angle_at(in);
+    const double k_a = 2.0 * std::sin(a_wt) * std::cos(in.beta_b);
+    EXPECT_NEAR(r.min.j_n, 0.09 * std::cos(20 * kDeg) - 0.02 * k_a, 2e-5);
+    EXPECT_NEAR(r.max.j_n, 0.20 * std::cos(20 * kDeg) + 0.02 * k_a, 2e-5);
+    EXPECT_NEAR(r.min.j_t, r.min.j_n / (std::cos(a_wt) * std::cos(in.beta_b)), 1e-4);
+  }
+}
+
+TEST(BacklashRange, InternalPairIsTightestAtTheLargestDistance) {
+  // Moving the pinion away from the ring centre pushes its teeth into the ring's: for an internal
+  // pair the least backlash is at the largest centre distance.
+  const gg::BacklashInput in = nominal(17, -96, 4.0, 0.0, 0.2, -0.5);
+  const gg::PairLimits l{-0.05, -0.1, -0.05, -0.1, 0.03, -0.03};
+  const auto r = gg::backlash_range(in, 0.0, l);
+  gg::BacklashInput far = in;
+  far.s_t1 -= 0.05;
+  far.s_t2 -= 0.05;
+  far.a -= 0.03;  // a < 0 for internal pairs: |a| + 0.03
+  EXPECT_NEAR(r.min.j_n, gg::backlash_at(far).j_n, 1e-12);
+  EXPECT_LT(r.min.j_n, 0.1 * std::cos(20 * kDeg));
+  EXPECT_GT(r.max.j_n, 0.2 * std::cos(20 * kDeg));
+}
+
+TEST(BacklashRange, ThermalExpansion) {
+  const gg::BacklashInput in = nominal(20, 40, 3.0, 0.0, 0.0, 0.0);
+  // Everything at one temperature: a similar pair, still without backlash.
+  EXPECT_NEAR(gg::backlash_at(gg::at_temperature(in, 6e-4, 6e-4, 6e-4)).j_n, 0.0, 1e-12);
+  // Aluminium housing (23e-6 /K) and steel gears (11.5e-6 /K) 50 K warmer: the bores move apart by
+  // a (e_h - e_g) and, linearly, j_n = 2 a (e_h - e_g) sin(alpha_wt) cos(beta_b).
+  const double e_g = 11.5e-6 * 50, e_h = 23e-6 * 50;
+  const auto warm = gg::backlash_at(gg::at_temperature(in, e_g, e_g, e_h));
+  EXPECT_NEAR(warm.j_n, 2.0 * 90.0 * (e_h - e_g) * std::sin(20 * kDeg), 1e-4);  // 0.2 % second order
+}

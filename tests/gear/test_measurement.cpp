@@ -165,3 +165,20 @@ TEST(Chordal, PublishedSpurAndHelicalExamples) {
   EXPECT_NEAR(gg::chordal_thickness(h), 8.5728, 5e-5);
   EXPECT_NEAR(gg::chordal_height(h, d + 12.0), 6.1712, 5e-5);
 }
+
+TEST(Pins, UsableRangeStandsOutOfTheTip) {
+  // z = 20, m = 3, x = 0: the pin flush with the tip has zero protrusion, a bigger one stands out,
+  // and the classical pin touching at the reference circle (about 1.68 m) lies within the range
+  // between the flush pin and the pin touching at the tip circle.
+  const auto g = tooth(20, 3.0, 0.0);
+  const double d_a = 66.0;
+  const double D_flush = gg::pin_diameter_flush_with_tip(g, d_a);
+  EXPECT_NEAR(gg::pin_protrusion(g, D_flush, d_a), 0.0, 1e-9);
+  EXPECT_GT(gg::pin_protrusion(g, D_flush * 1.05, d_a), 0.0);
+  const double D_ref = gg::pin_diameter_for_contact_at(g, 60.0);
+  EXPECT_GT(D_ref, D_flush);
+  EXPECT_LT(D_ref, gg::pin_diameter_for_contact_at(g, d_a));
+  // Protrusion by hand for the reference pin: (d_M + D - d_a) / 2 with d_M from M_d (even z).
+  EXPECT_NEAR(gg::pin_protrusion(g, D_ref, d_a), 0.5 * (gg::dimension_over_pins(g, D_ref) - d_a), 1e-12);
+  EXPECT_THROW(gg::pin_diameter_flush_with_tip(tooth(-40, 3.0, 0.0), -114.0), std::domain_error);
+}

@@ -36,4 +36,44 @@ double normal_backlash(double j_wt, double alpha_wt, double beta_b);
 /// j_bn = j_bn0 - (A_sn1 + A_sn2) cos(alpha_n).
 double allowance_for_backlash(const BacklashInput& in, double alpha_n, double j_bn_target);
 
+/// Backlash of one state of the pair: circumferential on the working circle and normal, mm.
+struct Backlash {
+  double j_t = 0;  ///< circumferential (transverse) backlash j_wt
+  double j_n = 0;  ///< normal backlash j_bn = j_wt cos(alpha_wt) cos(beta_b)
+};
+
+/// j_t and j_n of `in` (circumferential_backlash and normal_backlash together).
+/// @throws std::domain_error if the base circles do not fit the centre distance.
+Backlash backlash_at(const BacklashInput& in);
+
+/// The pair with both gears and the housing at other temperatures than the reference 20 deg C of
+/// ISO 1: every length of gear i (diameters, thicknesses) grows by the factor (1 + growth_i), the
+/// centre distance by (1 + growth_housing), growth = alpha (T - 20 deg C) with alpha the linear
+/// expansion coefficient of the material (1/K).
+BacklashInput at_temperature(const BacklashInput& in, double growth1, double growth2, double growth_housing);
+
+/// The pair with the magnitude of its centre distance changed by A_a (mm, positive = shafts
+/// further apart), whatever the sign convention of `in.a` (negative for internal pairs).
+BacklashInput with_center_distance_deviation(BacklashInput in, double A_a);
+
+/// Tooth thickness and centre distance limits of a pair, mm (normal thickness allowances with the
+/// DIN 3967 signs, negative = thinner; centre distance allowances of |a|, positive = shafts further apart).
+struct PairLimits {
+  double A_sne1 = 0, A_sni1 = 0;  ///< gear 1 upper, lower
+  double A_sne2 = 0, A_sni2 = 0;  ///< gear 2 upper, lower
+  double A_ae = 0, A_ai = 0;      ///< centre distance upper, lower
+};
+
+/// Smallest and largest backlash over the limits: the thickest teeth (upper allowances) at the
+/// least favourable centre distance give the minimum, the thinnest teeth at the most favourable
+/// the maximum (for an external pair the smallest and largest distance; for an internal pair the
+/// other way round: both ends are evaluated). Exact (each state through circumferential_backlash),
+/// no pitch, profile or helix deviations included (the theoretical backlash of ISO 21771-2).
+/// `nominal` holds the thicknesses without allowance (s_t) and the nominal working centre
+/// distance; beta is the reference helix angle (to turn normal allowances into transverse ones).
+struct BacklashRange {
+  Backlash min, max;
+};
+BacklashRange backlash_range(const BacklashInput& nominal, double beta, const PairLimits& limits);
+
 }  // namespace gearkit::gear

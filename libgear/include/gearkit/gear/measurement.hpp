@@ -64,6 +64,19 @@ double pin_centre_pressure_angle(const ToothData& g, double D_M);
 /// d_M = d_b / cos alpha_Mt. Returns a positive length.
 double dimension_over_pins(const ToothData& g, double D_M);
 
+/// How far the pins (balls) of diameter D_M stand out of the tip circle d_a, mm, measured radially
+/// at the pin: (d_M + D_M - d_a) / 2 for external gears, (|d_a| - (|d_M| - D_M)) / 2 for internal
+/// gears (pins between the teeth), d_M = d_b / cos alpha_Mt the pin-centre circle. A micrometer
+/// needs it > 0. Grows with D_M.
+double pin_protrusion(const ToothData& g, double D_M, double d_a);
+
+/// Smallest pin (ball) diameter that stands out of the tip circle (pin_protrusion = 0), found by
+/// bisection between the pins touching the flanks at the base circle and at the tip circle
+/// (external gears).
+/// @throws std::domain_error for internal gears, or if even the pin touching at the tip circle
+///         does not stand out.
+double pin_diameter_flush_with_tip(const ToothData& g, double d_a);
+
 /// Chordal tooth thickness at the reference circle, normal section: s_c = d_n sin(s_n / d_n),
 /// d_n = d / cos^2(beta), the diameter of curvature of the reference cylinder's normal section
 /// (z / cos^3(beta) teeth of module m_n, as in KHK/SDP "Elements of Metric Gear Technology"

@@ -1,0 +1,192 @@
+// Tests for gearkit/gear/inspection.hpp.
+#include <gearkit/gear/cylindrical_gear.hpp>
+#include <gearkit/gear/inspection.hpp>
+#include <gearkit/gear/measurement.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace gg = gearkit::gear;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+const double kCos20 = std::cos(20 * kDeg), kTan20 = std::tan(20 * kDeg);
+
+gg::GearPairInput spur_20_40() {
+  gg::GearPairInput in;
+  in.z1 = 20;
+  in.z2 = 40;
+  in.module = 3.0;
+  in.face_width = 30.0;
+  return in;
+}
+
+gg::InspectionInput grade(int q1, int q2) {
+  gg::InspectionInput ii;
+  ii.grade = {q1, q2};
+  return ii;
+}
+
+std::string field_of(const gg::GearPairInput& in, const gg::InspectionInput& ii) {
+  try {
+    gg::compute_inspection(in, gg::compute_gear_pair(in), ii);
+  } catch (const gg::GeometryError& e) {
+    return e.field();
+  }
+  return "";
+}
+
+}  // namespace
+
+// z = 20/40, m = 3 mm, b = 30 mm, ISO 1328-1:2013 class 7, ISO/TR 10064-2 allowances, by hand:
+// a = 90 mm: j_bn,min = 2/3 (0.06 + 0.045 + 0.09) = 0.13 mm; centre distance js8 (grade 7-8), IT8 of
+// 90 mm = 54 um -> A_a = +-0.027 mm. Gear 1 (d = 60 mm): F_pT = (0.12 + 4.2603 + 2.1 + 12) 2 = 36.96,
+// F_rT = 0.9 * 36.96 = 33.26 -> 33 um; b_r = IT9(60) = 74 um; T_sn = 2 tan 20 sqrt(33^2 + 74^2) =
+// 58.98 um. Gear 2 (d = 120 mm): F_pT = (0.24 + 6.0249 + 2.1 + 12) 2 = 40.73, F_rT = 36.66 -> 37 um;
+// b_r = IT9(120) = 87 um; T_sn = 0.72794 sqrt(37^2 + 87^2) = 68.82 um.
+TEST(Inspection, IsoTrAllowancesOfASpurPair) {
+  const auto in = spur_20_40();
+  const auto table = gg::compute_gear_pair(in);
+  const auto r = gg::compute_inspection(in, table, grade(7, 7));
+  EXPECT_EQ(r.pair.center_distance_field, "js8");
+  EXPECT_DOUBLE_EQ(r.pair.A_ae, 0.027);
+  EXPECT_DOUBLE_EQ(r.pair.A_ai, -0.027);
+  EXPECT_NEAR(r.pair.j_bn_min_target, 0.13, 1e-12);
+  EXPECT_DOUBLE_EQ(r.gear[0].tolerances->F_rT, 33.0);
+  EXPECT_DOUBLE_EQ(r.gear[1].tolerances->F_rT, 37.0);
+  EXPECT_DOUBLE_EQ(r.gear[0].b_r, 74.0);
+  EXPECT_DOUBLE_EQ(r.gear[1].b_r, 87.0);
+  EXPECT_NEAR(r.gear[0].T_sn, 0.05898, 1e-5);
+  EXPECT_NEAR(r.gear[1].T_sn, 0.06882, 1e-5);
+  // Equal upper allowances that leave exactly j_bn,min at the smallest centre distance; linear
+  // rule: 2 A_sne cos(alpha_n) = -(j_bn,min + 2 * 0.027 sin(alpha_w)) (alpha_w = 20 deg here).
+  EXPECT_DOUBLE_EQ(r.gear[0].allowances.A_sne, r.gear[1].allowances.A_sne);
+  EXPECT_NEAR(r.pair.range.min.j_n, 0.13, 1e-12);
+  EXPECT_NEAR(r.gear[0].allowances.A_sne, -(0.13 + 0.054 * std::sin(20 * kDeg)) / (2 * kCos20), 3e-5);
+  EXPECT_EQ(r.gear[0].source, gg::AllowanceSource::iso_tr_10064_2);
+  // Largest backlash: both tolerances and the whole centre distance field on top (linear rule).
+  EXPECT_NEAR(r.pair.range.max.j_n, 0.13 + (0.05898 + 0.06882) * kCos20 + 4 * 0.027 * std::sin(20 * kDeg), 2e-5);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
+// Span limits: W_k changes by exactly A cos(alpha_n) (ISO 21771: W_k = ... + 2 x m_n sin alpha_n),
+// with the DIN 3967 runout term 0.72 F_r sin(alpha_n) taken off both limits.
+TEST(Inspection, SpanLimitsFollowDin3967) {
+  const auto in = spur_20_40();
+  const auto table = gg::compute_gear_pair(in);
+  const auto r = gg::compute_inspection(in, table, grade(7, 7));
+  for (int i = 0; i < 2; ++i) {
+    const auto& g = r.gear[i];
+    const double runout = 0.72 * 1e-3 * g.F_r * std::sin(20 * kDeg);
+    EXPECT_NEAR(g.W_k_max, table.gear[i].W_k + g.allowances.A_sne * kCos20 - runout, 1e-12);
+    EXPECT_NEAR(g.W_k_min, table.gear[i].W_k + g.allowances.A_sni * kCos20 + runout, 1e-12);
+    EXPECT_GT(g.d_W_min, table.gear[i].d_Ff);
+    EXPECT_LT(g.d_W_max, table.gear[i].d_a);
+  }
+}
+
+// Pins: the exact limits against the linearised rule of the tolerance sheets,
+// dM = dW / (sin(alpha_Mt) cos(beta_b)) for even z (qiqiwenku "齿轮公差计算": E_ms = E_wms / (sin
+// alpha_Mt cos beta_b)), on a helical gear.
+TEST(Inspection, PinLimitsAgreeWithTheLinearisedRule) {
+  gg::GearPairInput in = spur_20_40();
+  in.helix_angle = 15 * kDeg;
+  const auto table = gg::compute_gear_pair(in);
+  const auto r = gg::compute_inspection(in, table, grade(6, 6));
+  const auto& g = table.gear[0];
+  const auto nominal = gg::make_tooth_data(20, 3.0, 20 * kDeg, 15 * kDeg, g.s_t);
+  const double alpha_Mt = gg::pin_centre_pressure_angle(nominal, g.pin_diameter);
+  const double per_span = 1.0 / (std::sin(alpha_Mt) * std::cos(g.beta_b));
+  const auto& gi = r.gear[0];
+  // Linearised: within 1 % (alpha_Mt itself moves with the thickness).
+  EXPECT_NEAR(gi.M_d_max - g.M_d, (gi.W_k_max - g.W_k) * per_span, 0.01 * std::fabs(gi.M_d_max - g.M_d));
+  EXPECT_NEAR(gi.M_d_min - g.M_d, (gi.W_k_min - g.W_k) * per_span, 0.01 * std::fabs(gi.M_d_min - g.M_d));
+  EXPECT_LT(gi.D_M_min, gi.D_M);
+  EXPECT_GT(gi.D_M_max, gi.D_M);
+  EXPECT_NEAR(gi.b_min_span, gi.W_k_max * std::sin(g.beta_b), 1e-12);
+}
+
+TEST(Inspection, GivenAllowancesAndCentreDistance) {
+  const auto in = spur_20_40();
+  const auto table = gg::compute_gear_pair(in);
+  gg::InspectionInput ii;
+  ii.allowances = {gg::ThicknessAllowances{-0.05, -0.1}, gg::ThicknessAllowances{-0.06, -0.12}};
+  ii.center_distance_allowances = gg::ThicknessAllowances{0.02, -0.01};
+  const auto r = gg::compute_inspection(in, table, ii);
+  EXPECT_EQ(r.gear[0].source, gg::AllowanceSource::given);
+  EXPECT_FALSE(r.gear[0].tolerances.has_value());
+  EXPECT_DOUBLE_EQ(r.gear[1].T_sn, 0.06);
+  // No grade, no runout term: W_k limits are the allowances themselves, cos(alpha_n) apart.
+  EXPECT_NEAR(r.gear[0].W_k_max - r.gear[0].W_k_min, 0.05 * kCos20, 1e-12);
+  EXPECT_NEAR(r.pair.range.min.j_n, 0.11 * kCos20 - 0.02 * std::sin(20 * kDeg), 2e-5);
+  EXPECT_NEAR(r.pair.range.max.j_n, 0.22 * kCos20 + 0.04 * std::sin(20 * kDeg), 2e-5);
+  EXPECT_TRUE(std::isnan(r.pair.j_bn_min_target));
+}
+
+TEST(Inspection, NegativeMinimumBacklashIsAWarning) {
+  const auto in = spur_20_40();
+  gg::InspectionInput ii;
+  ii.allowances = {gg::ThicknessAllowances{0.0, -0.03}, gg::ThicknessAllowances{0.0, -0.03}};
+  ii.center_distance_it = 8;
+  const auto r = gg::compute_inspection(in, gg::compute_gear_pair(in), ii);
+  EXPECT_LT(r.pair.range.min.j_n, 0.0);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.back().find("minimum backlash"), std::string::npos);
+}
+
+// Operating temperatures: with an aluminium housing 60 K warmer and steel gears 40 K warmer the
+// allowances are chosen for the tighter of the two states; j_n,min then holds in both.
+TEST(Inspection, ThermalStateSetsTheAllowances) {
+  const auto in = spur_20_40();
+  const auto table = gg::compute_gear_pair(in);
+  auto ii = grade(7, 7);
+  ii.T_gears = 60.0;
+  ii.T_housing = 40.0;  // housing cooler than the gears: the warm state is the tighter one
+  const auto r = gg::compute_inspection(in, table, ii);
+  ASSERT_TRUE(r.pair.operating.has_value());
+  EXPECT_NEAR(r.pair.operating->min.j_n, 0.13, 1e-9);
+  EXPECT_GT(r.pair.range.min.j_n, 0.13);
+  // Linear check: gears 40 K, housing 20 K above 20 deg C, both steel: the bores move apart by
+  // a (e_h - e_g) = 90 * 11.5e-6 * (20 - 40) mm, costing 2 |da| sin(alpha_w) of backlash.
+  EXPECT_NEAR(r.pair.range.min.j_n - 0.13, 2 * 90 * 11.5e-6 * 20 * std::sin(20 * kDeg), 5e-5);
+}
+
+TEST(Inspection, RingGear) {
+  gg::GearPairInput in;
+  in.z1 = 17;
+  in.z2 = 60;
+  in.internal = true;
+  in.module = 2.0;
+  in.x1 = 0.2;
+  in.x2 = 0.2;
+  const auto r = gg::compute_inspection(in, gg::compute_gear_pair(in), grade(8, 8));
+  EXPECT_TRUE(std::isnan(r.gear[1].W_k_max));       // no span on a ring
+  EXPECT_TRUE(std::isnan(r.gear[1].D_M_min));       // pin range needs the ring's cutter
+  EXPECT_GT(r.gear[1].M_d_max, r.gear[1].M_d_min);  // between pins, thin teeth give the larger value
+  EXPECT_NEAR(r.pair.range.min.j_n, r.pair.j_bn_min_target, 1e-9);
+}
+
+TEST(Inspection, BadInputNamesTheField) {
+  const auto in = spur_20_40();
+  gg::InspectionInput none;
+  none.grade = {7, std::nullopt};
+  EXPECT_EQ(field_of(in, none), "grade2");
+  EXPECT_EQ(field_of(in, grade(12, 7)), "grade1");
+  gg::InspectionInput crossed = grade(7, 7);
+  crossed.allowances[0] = gg::ThicknessAllowances{-0.1, -0.05};
+  EXPECT_EQ(field_of(in, crossed), "allowances1");
+  gg::InspectionInput a = grade(7, 7);
+  a.center_distance_allowances = gg::ThicknessAllowances{-0.1, 0.05};
+  EXPECT_EQ(field_of(in, a), "center_distance_allowances");
+  gg::InspectionInput it = grade(7, 7);
+  it.center_distance_it = 3;
+  EXPECT_EQ(field_of(in, it), "center_distance_it");
+  EXPECT_EQ(gg::default_center_distance_it(4), 6);
+  EXPECT_EQ(gg::default_center_distance_it(6), 7);
+  EXPECT_EQ(gg::default_center_distance_it(7), 8);
+  EXPECT_EQ(gg::default_center_distance_it(10), 9);
+  EXPECT_EQ(gg::default_center_distance_it(11), 10);
+}
