@@ -55,7 +55,7 @@ BacklashInput at_temperature(const BacklashInput& in, double growth1, double gro
   return out;
 }
 
-BacklashInput with_center_distance_deviation(BacklashInput in, double A_a) {
+BacklashInput with_centre_distance_deviation(BacklashInput in, double A_a) {
   in.a += in.a < 0.0 ? -A_a : A_a;
   return in;
 }
@@ -66,7 +66,7 @@ BacklashRange backlash_range(const BacklashInput& nominal, double beta, const Pa
     BacklashInput in = nominal;
     in.s_t1 += A_sn1 / cos_beta;
     in.s_t2 += A_sn2 / cos_beta;
-    return backlash_at(with_center_distance_deviation(in, A_a));
+    return backlash_at(with_centre_distance_deviation(in, A_a));
   };
   const Backlash tight_e = state(l.A_sne1, l.A_sne2, l.A_ae), tight_i = state(l.A_sne1, l.A_sne2, l.A_ai);
   const Backlash loose_e = state(l.A_sni1, l.A_sni2, l.A_ae), loose_i = state(l.A_sni1, l.A_sni2, l.A_ai);

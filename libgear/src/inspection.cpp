@@ -17,7 +17,7 @@ const char* to_string(AllowanceSource source) {
   return source == AllowanceSource::given ? "given" : "ISO/TR 10064-2";
 }
 
-int default_center_distance_it(int grade) {
+int default_centre_distance_it(int grade) {
   if (grade <= 4) return 6;
   if (grade >= 11) return 10;
   return 7 + (grade - 5) / 2;  // 5-6: 7, 7-8: 8, 9-10: 9
@@ -71,32 +71,32 @@ std::optional<FlankTolerances> gear_tolerances(const GearPairInput& in, const Ge
 }
 
 // Centre distance allowances: given, or the js field of the IT grade (given or from the grades).
-void center_distance_allowances(const GearPairResult& t, const InspectionInput& ii, PairInspection& p) {
-  if (ii.center_distance_allowances) {
-    p.A_ae = ii.center_distance_allowances->A_sne;
-    p.A_ai = ii.center_distance_allowances->A_sni;
-    p.center_distance_field = "given";
+void centre_distance_allowances(const GearPairResult& t, const InspectionInput& ii, PairInspection& p) {
+  if (ii.centre_distance_allowances) {
+    p.A_ae = ii.centre_distance_allowances->A_sne;
+    p.A_ai = ii.centre_distance_allowances->A_sni;
+    p.centre_distance_field = "given";
     if (!(p.A_ae >= p.A_ai)) {
-      throw GeometryError("center_distance_allowances",
+      throw GeometryError("centre_distance_allowances",
                           fmt::format("expected upper >= lower, found {} < {} mm", p.A_ae, p.A_ai));
     }
     return;
   }
-  std::optional<int> it = ii.center_distance_it;
+  std::optional<int> it = ii.centre_distance_it;
   if (!it && (ii.grade[0] || ii.grade[1])) {
-    it = default_center_distance_it(std::max(ii.grade[0].value_or(0), ii.grade[1].value_or(0)));
+    it = default_centre_distance_it(std::max(ii.grade[0].value_or(0), ii.grade[1].value_or(0)));
   }
   if (!it) {
-    p.center_distance_field = "none";
+    p.centre_distance_field = "none";
     return;
   }
   try {
     p.A_ae = js_limit_deviation(*it, t.pair.a);
   } catch (const std::domain_error& e) {
-    throw GeometryError("center_distance_it", e.what());
+    throw GeometryError("centre_distance_it", e.what());
   }
   p.A_ai = -p.A_ae;
-  p.center_distance_field = fmt::format("js{}", *it);
+  p.centre_distance_field = fmt::format("js{}", *it);
 }
 
 // The states the minimum backlash must hold in: 20 deg C and, if given, the operating temperatures.
@@ -118,7 +118,7 @@ double required_upper_sum(const std::vector<BacklashInput>& states, const PairIn
   double each = std::numeric_limits<double>::infinity();
   for (const BacklashInput& s : states) {
     for (double A_a : {p.A_ae, p.A_ai}) {
-      each = std::min(each, allowance_for_backlash(with_center_distance_deviation(s, A_a), alpha_n, j_target));
+      each = std::min(each, allowance_for_backlash(with_centre_distance_deviation(s, A_a), alpha_n, j_target));
     }
   }
   return 2.0 * each;
@@ -127,7 +127,7 @@ double required_upper_sum(const std::vector<BacklashInput>& states, const PairIn
 // ISO/TR 10064-2 allowances of gear i given the upper allowance it must take.
 void iso_tr_allowances(const GearResult& g, int i, const InspectionInput& ii, double A_sne, GearInspection& gi) {
   if (!gi.tolerances) {
-    throw GeometryError(field("grade", i), "needs an accuracy grade (or given thickness allowances)");
+    throw GeometryError(field("grade", i), fmt::format("gear {} needs an accuracy grade or its thickness allowances", i + 1));
   }
   gi.source = AllowanceSource::iso_tr_10064_2;
   try {
@@ -277,12 +277,12 @@ InspectionResult compute_inspection(const GearPairInput& in, const GearPairResul
   InspectionResult r;
   for (int i = 0; i < 2; ++i) {
     if (!ii.grade[i] && !ii.allowances[i]) {
-      throw GeometryError(field("grade", i), "needs an accuracy grade or given thickness allowances");
+      throw GeometryError(field("grade", i), fmt::format("gear {} needs an accuracy grade or its thickness allowances", i + 1));
     }
     r.gear[i].tolerances = gear_tolerances(in, t.gear[i], i, ii);
     r.gear[i].F_r = r.gear[i].tolerances ? r.gear[i].tolerances->F_rT : 0.0;
   }
-  center_distance_allowances(t, ii, r.pair);
+  centre_distance_allowances(t, ii, r.pair);
   const BacklashInput nominal = nominal_pair(in, t);
   const std::vector<BacklashInput> states = thermal_states(nominal, ii);
   try {
@@ -296,7 +296,7 @@ InspectionResult compute_inspection(const GearPairInput& in, const GearPairResul
     r.pair.range = backlash_range(nominal, t.gear[0].beta, limits);
     if (states.size() > 1) r.pair.operating = backlash_range(states[1], t.gear[0].beta, limits);
   } catch (const std::domain_error& e) {
-    throw GeometryError("center_distance_allowances", e.what());
+    throw GeometryError("centre_distance_allowances", e.what());
   }
   inspection_checks(in, t, r);
   return r;

@@ -51,7 +51,7 @@ TEST(Inspection, IsoTrAllowancesOfASpurPair) {
   const auto in = spur_20_40();
   const auto table = gg::compute_gear_pair(in);
   const auto r = gg::compute_inspection(in, table, grade(7, 7));
-  EXPECT_EQ(r.pair.center_distance_field, "js8");
+  EXPECT_EQ(r.pair.centre_distance_field, "js8");
   EXPECT_DOUBLE_EQ(r.pair.A_ae, 0.027);
   EXPECT_DOUBLE_EQ(r.pair.A_ai, -0.027);
   EXPECT_NEAR(r.pair.j_bn_min_target, 0.13, 1e-12);
@@ -114,7 +114,7 @@ TEST(Inspection, GivenAllowancesAndCentreDistance) {
   const auto table = gg::compute_gear_pair(in);
   gg::InspectionInput ii;
   ii.allowances = {gg::ThicknessAllowances{-0.05, -0.1}, gg::ThicknessAllowances{-0.06, -0.12}};
-  ii.center_distance_allowances = gg::ThicknessAllowances{0.02, -0.01};
+  ii.centre_distance_allowances = gg::ThicknessAllowances{0.02, -0.01};
   const auto r = gg::compute_inspection(in, table, ii);
   EXPECT_EQ(r.gear[0].source, gg::AllowanceSource::given);
   EXPECT_FALSE(r.gear[0].tolerances.has_value());
@@ -130,7 +130,7 @@ TEST(Inspection, NegativeMinimumBacklashIsAWarning) {
   const auto in = spur_20_40();
   gg::InspectionInput ii;
   ii.allowances = {gg::ThicknessAllowances{0.0, -0.03}, gg::ThicknessAllowances{0.0, -0.03}};
-  ii.center_distance_it = 8;
+  ii.centre_distance_it = 8;
   const auto r = gg::compute_inspection(in, gg::compute_gear_pair(in), ii);
   EXPECT_LT(r.pair.range.min.j_n, 0.0);
   ASSERT_FALSE(r.warnings.empty());
@@ -179,14 +179,14 @@ TEST(Inspection, BadInputNamesTheField) {
   crossed.allowances[0] = gg::ThicknessAllowances{-0.1, -0.05};
   EXPECT_EQ(field_of(in, crossed), "allowances1");
   gg::InspectionInput a = grade(7, 7);
-  a.center_distance_allowances = gg::ThicknessAllowances{-0.1, 0.05};
-  EXPECT_EQ(field_of(in, a), "center_distance_allowances");
+  a.centre_distance_allowances = gg::ThicknessAllowances{-0.1, 0.05};
+  EXPECT_EQ(field_of(in, a), "centre_distance_allowances");
   gg::InspectionInput it = grade(7, 7);
-  it.center_distance_it = 3;
-  EXPECT_EQ(field_of(in, it), "center_distance_it");
-  EXPECT_EQ(gg::default_center_distance_it(4), 6);
-  EXPECT_EQ(gg::default_center_distance_it(6), 7);
-  EXPECT_EQ(gg::default_center_distance_it(7), 8);
-  EXPECT_EQ(gg::default_center_distance_it(10), 9);
-  EXPECT_EQ(gg::default_center_distance_it(11), 10);
+  it.centre_distance_it = 3;
+  EXPECT_EQ(field_of(in, it), "centre_distance_it");
+  EXPECT_EQ(gg::default_centre_distance_it(4), 6);
+  EXPECT_EQ(gg::default_centre_distance_it(6), 7);
+  EXPECT_EQ(gg::default_centre_distance_it(7), 8);
+  EXPECT_EQ(gg::default_centre_distance_it(10), 9);
+  EXPECT_EQ(gg::default_centre_distance_it(11), 10);
 }

@@ -54,7 +54,7 @@ BacklashInput at_temperature(const BacklashInput& in, double growth1, double gro
 
 /// The pair with the magnitude of its centre distance changed by A_a (mm, positive = shafts
 /// further apart), whatever the sign convention of `in.a` (negative for internal pairs).
-BacklashInput with_center_distance_deviation(BacklashInput in, double A_a);
+BacklashInput with_centre_distance_deviation(BacklashInput in, double A_a);
 
 /// Tooth thickness and centre distance limits of a pair, mm (normal thickness allowances with the
 /// DIN 3967 signs, negative = thinner; centre distance allowances of |a|, positive = shafts further apart).

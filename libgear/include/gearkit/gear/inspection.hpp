@@ -28,8 +28,8 @@ struct InspectionInput {
   Iso1328Edition edition = Iso1328Edition::iso2013;
   std::array<std::optional<ThicknessAllowances>, 2> allowances;  ///< given directly; else ISO/TR 10064-2
   std::optional<double> j_bn_min;  ///< minimum normal backlash the allowances must give, mm (default ISO/TR 10064-2)
-  std::optional<ThicknessAllowances> center_distance_allowances;  ///< A_ae, A_ai of |a|, mm (given)
-  std::optional<int> center_distance_it;  ///< IT grade of the js field (default from the accuracy grade)
+  std::optional<ThicknessAllowances> centre_distance_allowances;  ///< A_ae, A_ai of |a|, mm (given)
+  std::optional<int> centre_distance_it;  ///< IT grade of the js field (default from the accuracy grade)
   std::optional<double> T_gears, T_housing;  ///< operating temperatures, deg C (reference 20)
   double alpha_gear1 = kSteelExpansion, alpha_gear2 = kSteelExpansion, alpha_housing = kSteelExpansion;  ///< 1/K
 };
@@ -57,7 +57,7 @@ struct GearInspection {
 };
 
 struct PairInspection {
-  std::string center_distance_field;  ///< "js7", ... or "given"
+  std::string centre_distance_field;  ///< "js7", ... or "given"
   double A_ae = 0, A_ai = 0;          ///< centre distance allowances, mm
   double j_bn_min_target = 0;         ///< minimum backlash aimed at by the ISO/TR 10064-2 system (NaN if all given)
   BacklashRange range;                ///< at 20 deg C
@@ -72,11 +72,11 @@ struct InspectionResult {
 
 /// Default IT grade of the centre-distance js field for an accuracy grade: <= 4: js6, 5-6: js7,
 /// 7-8: js8, 9-10: js9, >= 11: js10 (+-IT/2 rule of gear practice, one IT grade per two grades).
-int default_center_distance_it(int grade);
+int default_centre_distance_it(int grade);
 
 /// The inspection data of the pair `input` -> `table`.
 /// @throws GeometryError naming the InspectionInput field at fault ("grade1", "allowances2",
-///         "center_distance_it", ...) when a gear has neither grade nor allowances, a grade is outside
+///         "centre_distance_it", ...) when a gear has neither grade nor allowances, a grade is outside
 ///         the edition, allowances have A_sne < A_sni, or the data fall outside the tables used.
 InspectionResult compute_inspection(const GearPairInput& input, const GearPairResult& table,
                                     const InspectionInput& inspection);

@@ -1,0 +1,107 @@
+// CLI tests of the accuracy and inspection options of `gearkit gear`
+// (plugins/gear/gear_tolerance_options.cpp, gear_tolerance_report.cpp), run through GEARKIT_EXE.
+#include "run_gearkit.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+using gearkit::testing::run_gearkit;
+
+namespace {
+
+constexpr const char* kPair = "gear --z1 20 --z2 40 --module 3 --face-width 30 ";
+
+nlohmann::json json_of(const std::string& options) {
+  const auto r = run_gearkit(std::string(kPair) + options + " --format json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  return nlohmann::json::parse(r.out);
+}
+
+}  // namespace
+
+// z = 20/40, m = 3, class 7 of ISO 1328-1:2013, by hand (see test_inspection.cpp): gear 1 f_pT =
+// (0.06 + 1.2 + 5) 2 = 12.52 -> 13 um, F_pT = 36.96 -> 37 um; j_bn,min = 0.13 mm (ISO/TR 10064-2).
+TEST(GearToleranceCommand, JsonFieldsAsTheIssueNamesThem) {
+  const auto j = json_of("--quality 7");
+  for (const auto& g : j["gears"]) {
+    for (const char* key : {"f_pT_um", "F_pT_um", "F_alphaT_um", "f_falphaT_um", "f_HalphaT_um", "F_betaT_um",
+                            "f_fbetaT_um", "f_HbetaT_um", "F_rT_um", "F_id_um", "f_id_um", "edition", "grade"}) {
+      EXPECT_TRUE(g["tolerances"].contains(key)) << key;
+    }
+    for (const char* key : {"W_k_max_mm", "W_k_min_mm", "M_d_max_mm", "M_d_min_mm", "A_sne_mm", "A_sni_mm", "T_sn_mm"}) {
+      EXPECT_TRUE(g.contains(key)) << key;
+    }
+    EXPECT_GT(g["W_k_max_mm"].get<double>(), g["W_k_min_mm"].get<double>());
+    EXPECT_GT(g["M_d_max_mm"].get<double>(), g["M_d_min_mm"].get<double>());
+  }
+  EXPECT_EQ(j["gears"][0]["tolerances"]["f_pT_um"], 13.0);
+  EXPECT_EQ(j["gears"][0]["tolerances"]["F_pT_um"], 37.0);
+  const auto& b = j["pair"]["backlash"];
+  for (const char* key : {"j_n_min_mm", "j_n_max_mm", "j_t_min_mm", "j_t_max_mm"}) EXPECT_TRUE(b.contains(key)) << key;
+  EXPECT_NEAR(b["j_n_min_mm"].get<double>(), 0.13, 1e-9);
+  EXPECT_TRUE(b["operating"].is_null());
+  EXPECT_EQ(j["pair"]["centre_distance_allowances"]["field"], "js8");
+}
+
+TEST(GearToleranceCommand, QualityPerGearAndThe1995Edition) {
+  const auto j = json_of("--quality 6,8");
+  EXPECT_EQ(j["gears"][0]["tolerances"]["grade"], 6);
+  EXPECT_EQ(j["gears"][1]["tolerances"]["grade"], 8);
+  // 1995, grade 6, gear 2 (d = 120 mm, m_n = 3 mm, b = 30 mm): f_pt 8.5, F_p 27 um (test_accuracy.cpp).
+  const auto k = json_of("--quality 6 --iso1328-edition 1995");
+  EXPECT_EQ(k["gears"][1]["tolerances"]["edition"], "ISO 1328-1:1995");
+  EXPECT_EQ(k["gears"][1]["tolerances"]["f_pT_um"], 8.5);
+  EXPECT_EQ(k["gears"][1]["tolerances"]["F_pT_um"], 27.0);
+}
+
+TEST(GearToleranceCommand, GivenAllowancesAndTemperatures) {
+  const auto j = json_of("--thickness-allowances1 -0.05,-0.1 --thickness-allowances2 '-60 um,-0.12 mm' "
+                         "--centre-distance-allowances 0.02,-0.01");
+  EXPECT_TRUE(j["gears"][0]["tolerances"].is_null());
+  EXPECT_NEAR(j["gears"][1]["A_sne_mm"].get<double>(), -0.06, 1e-12);
+  EXPECT_EQ(j["gears"][0]["thickness_allowances_from"], "given");
+  // Gears 80 deg C, housing 40 deg C (steel): the warm state is the tighter one and gets j_bn,min.
+  const auto w = json_of("--quality 7 --temperature 80,40");
+  EXPECT_NEAR(w["pair"]["backlash"]["operating"]["j_n_min_mm"].get<double>(), 0.13, 1e-9);
+  EXPECT_GT(w["pair"]["backlash"]["j_n_min_mm"].get<double>(), 0.13);
+}
+
+TEST(GearToleranceCommand, BadInputExitsWithStatus2AndNamesTheOption) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--quality 12", "--quality"},
+      {"--quality 0", "--quality"},
+      {"--quality 7.5", "--quality"},
+      {"--quality 6,7,8", "--quality"},
+      {"--quality 13 --iso1328-edition 1995", "--quality"},
+      {"--quality 7 --iso1328-edition 2000", "--iso1328-edition"},
+      {"--thickness-allowances1 -0.1,-0.05 --quality 7", "--thickness-allowances1"},
+      {"--thickness-allowances2 -0.1 --quality 7", "--thickness-allowances2"},
+      {"--thickness-allowances1 -0.05,-0.1", "--quality"},
+      {"--quality 7 --centre-distance-tolerance h7", "--centre-distance-tolerance"},
+      {"--quality 7 --centre-distance-tolerance js13", "--centre-distance-tolerance"},
+      {"--quality 7 --centre-distance-allowances -0.02,0.02", "--centre-distance-allowances"},
+      {"--min-backlash 0.1", "--min-backlash"},
+      {"--quality 7 --temperature 900", "--temperature"},
+      {"--quality 7 --expansion 1e-5,1e-5,2e-5", "--expansion"},
+  };
+  for (const auto& [args, option] : cases) {
+    const auto r = run_gearkit(std::string(kPair) + args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(r.out, "") << args;
+    EXPECT_EQ(r.err.rfind("gearkit: ", 0), 0u) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << args << ": " << r.err;
+  }
+}
+
+TEST(GearToleranceCommand, NoBacklashIsAWarning) {
+  const std::string args = std::string(kPair) +
+                           "--thickness-allowances1 0,-0.03 --thickness-allowances2 0,-0.03 --centre-distance-tolerance js8";
+  const auto r = run_gearkit(args);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("minimum backlash"), std::string::npos);
+  EXPECT_EQ(run_gearkit(args + " --strict").status, 3);
+}
