@@ -1,6 +1,10 @@
 // Biarc fitting and arc-spline utilities in double precision (the exact offset is in offset_cgal.cpp).
 #include <gearkit/cam/arc_spline.hpp>
 
+#include "extremum.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -73,38 +77,67 @@ Direction joint_for(const Knot& a, const Knot& b) {
   return Direction::from_angle(2 * chord - 0.5 * (a0 + a1));
 }
 
-double biarc_error(const std::function<CurvePoint(double)>& curve, double ta, double tb,
-                   const std::vector<Piece>& pieces) {
-  double worst = 0;
-  for (int i = 1; i <= 5; ++i) {
-    const CurvePoint p = curve(ta + (tb - ta) * i / 6.0);
-    double d = INFINITY;
-    for (const Piece& piece : pieces) d = std::min(d, distance_to_piece(piece, p.x, p.y));
-    worst = std::max(worst, d);
+/// Largest distance, over the biarc's parameter interval and every offset d, from the offset
+/// curve point p(t) + d n(t) to the nearer of the two offset arcs. Found by maximisation (see
+/// extremum.hpp): the error of a biarc is a smooth function with a few humps, so eight samples
+/// bracket its maxima and golden-section search pins each to 1e-4 of the interval.
+void biarc_error(const std::function<CurvePoint(double)>& curve, double ta, double tb,
+                 const std::vector<Piece>& pieces, const std::vector<double>& offsets, std::vector<double>& errors) {
+  for (const Piece& piece : pieces)  // a biarc that loops is wrong even if it passes near the curve
+    if (std::abs(piece.sweep) > pi / 2) {
+      std::fill(errors.begin(), errors.end(), INFINITY);
+      return;
+    }
+  for (std::size_t k = 0; k < offsets.size(); ++k) {
+    const double d = offsets[k];
+    std::vector<Piece> moved;
+    for (const Piece& piece : pieces)
+      if (const auto m = offset_piece(piece, d)) moved.push_back(*m);
+    if (moved.empty()) {
+      errors[k] = 0;
+      continue;
+    }
+    auto distance = [&](double t) {
+      const CurvePoint p = curve(t);
+      const double len = std::hypot(p.tx, p.ty);
+      const double x = p.x - d * p.ty / len, y = p.y + d * p.tx / len;
+      double best = INFINITY;
+      for (const Piece& piece : moved) best = std::min(best, distance_to_piece(piece, x, y));
+      return best;
+    };
+    errors[k] = detail::find_maximum(distance, ta, tb, 8, 1e-4 * (tb - ta)).value;
   }
-  for (const Piece& piece : pieces)  // a biarc that loops is wrong even if it passes near the points
-    if (std::abs(piece.sweep) > pi / 2) worst = INFINITY;
-  return worst;
 }
 
-void fit_interval(const std::function<CurvePoint(double)>& curve, double ta, double tb, const Knot& ka,
-                  const Knot& kb, const FitOptions& options, int depth, BiarcSpline& out) {
+struct FitState {
+  const std::function<CurvePoint(double)>& curve;
+  const FitOptions& options;
+  std::vector<double> offsets;  // 0 first, then options.offsets
+  std::vector<double> errors;   // scratch, one per offset
+  BiarcSpline& out;
+};
+
+void fit_interval(FitState& st, double ta, double tb, const Knot& ka, const Knot& kb, int depth) {
   const Direction joint = joint_for(ka, kb);
   std::vector<Piece> pieces;
   biarc_pieces(ka, kb, joint, pieces);
-  if (biarc_error(curve, ta, tb, pieces) <= options.tolerance) {
-    out.joints.push_back(joint);
-    out.knots.push_back(kb);
+  biarc_error(st.curve, ta, tb, pieces, st.offsets, st.errors);
+  if (*std::max_element(st.errors.begin(), st.errors.end()) <= st.options.tolerance) {
+    st.out.joints.push_back(joint);
+    st.out.knots.push_back(kb);
+    for (std::size_t k = 0; k < st.errors.size(); ++k)
+      st.out.max_error[k] = std::max(st.out.max_error[k], st.errors[k]);
     return;
   }
-  if (depth >= options.max_depth) {
-    throw GeometryError("cannot fit arcs to the curve near parameter " + std::to_string(0.5 * (ta + tb)) +
-                        " (a cusp or corner?)");
+  if (depth >= st.options.max_depth) {
+    throw FitError(fmt::format("cannot fit arcs within {:.6g} to the curve near parameter {:.6g} (a cusp or a corner)",
+                               st.options.tolerance, 0.5 * (ta + tb)),
+                   0.5 * (ta + tb));
   }
   const double tm = 0.5 * (ta + tb);
-  const Knot km = knot_at(curve, tm);
-  fit_interval(curve, ta, tm, ka, km, options, depth + 1, out);
-  fit_interval(curve, tm, tb, km, kb, options, depth + 1, out);
+  const Knot km = knot_at(st.curve, tm);
+  fit_interval(st, ta, tm, ka, km, depth + 1);
+  fit_interval(st, tm, tb, km, kb, depth + 1);
 }
 
 }  // namespace
@@ -118,12 +151,16 @@ BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vect
                breaks.end());
   if (breaks.size() < 2) throw GeometryError("fit_biarcs: the parameter range is empty");
   BiarcSpline spline;
+  FitState state{curve, options, {0.0}, {}, spline};
+  state.offsets.insert(state.offsets.end(), options.offsets.begin(), options.offsets.end());
+  state.errors.assign(state.offsets.size(), 0);
+  spline.max_error.assign(state.offsets.size(), 0);
   const Knot first = knot_at(curve, breaks.front());
   spline.knots.push_back(first);
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
     const bool last = i + 2 == breaks.size();
     const Knot kb = closed && last ? first : knot_at(curve, breaks[i + 1]);
-    fit_interval(curve, breaks[i], breaks[i + 1], spline.knots.back(), kb, options, 0, spline);
+    fit_interval(state, breaks[i], breaks[i + 1], spline.knots.back(), kb, 0);
   }
   return spline;
 }
@@ -137,6 +174,24 @@ std::vector<Piece> pieces_of(const BiarcSpline& spline) {
       if (p.x0 != p.x1 || p.y0 != p.y1) out.push_back(p);
   }
   return out;
+}
+
+std::optional<Piece> offset_piece(const Piece& p, double distance) {
+  Piece m = p;
+  if (!p.is_arc()) {
+    const double len = std::hypot(p.x1 - p.x0, p.y1 - p.y0);
+    if (len == 0) return m;
+    const double nx = -(p.y1 - p.y0) / len * distance, ny = (p.x1 - p.x0) / len * distance;
+    m.x0 += nx, m.y0 += ny, m.x1 += nx, m.y1 += ny;
+    return m;
+  }
+  const double r = p.radius - distance;
+  if (r == 0 || (r > 0) != (p.radius > 0)) return std::nullopt;
+  const double k = r / p.radius;
+  m.radius = r;
+  m.x0 = p.cx + k * (p.x0 - p.cx), m.y0 = p.cy + k * (p.y0 - p.cy);
+  m.x1 = p.cx + k * (p.x1 - p.cx), m.y1 = p.cy + k * (p.y1 - p.cy);
+  return m;
 }
 
 double distance_to_piece(const Piece& p, double x, double y) {

@@ -1,5 +1,7 @@
 #include <gearkit/cam/cam_checks.hpp>
 
+#include "program_extremum.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,14 +19,59 @@ bool folds_here(const CamDesign& d, const ContactState& c) {
   return false;
 }
 
-double max_pressure_angle(const CamDesign& d, int samples) {
+/// The largest |pressure angle| at `samples` cam angles (a lower bound of the true largest);
+/// +infinity if a flat face's envelope folds there.
+double sampled_pressure_angle(const CamDesign& d, int samples) {
   double worst = 0;
   for (int i = 0; i < samples; ++i) {
     const ContactState c = contact_at(d, d.program.start() + two_pi * i / samples);
-    worst = std::max(worst, std::abs(c.pressure_angle));
     if (d.follower.contact == Contact::flat_face && folds_here(d, c)) return INFINITY;
+    worst = std::max(worst, std::abs(c.pressure_angle));
   }
   return worst;
+}
+
+/// The largest |pressure angle| over the turn, found (not sampled); +infinity if a flat face's
+/// envelope folds anywhere.
+double max_pressure_angle(const CamDesign& d, int samples) {
+  auto f = [&](double theta) {
+    const ContactState c = contact_at(d, theta);
+    if (d.follower.contact == Contact::flat_face && folds_here(d, c)) return double(INFINITY);
+    return std::abs(c.pressure_angle);
+  };
+  return detail::maximum_over_turn(d.program, f, samples).value;
+}
+
+/// Narrows a sampled extreme: the largest f near the sample at theta (spacing h), by
+/// golden-section search over the two neighbouring intervals.
+template <class F>
+detail::Peak refine(double theta, double h, F&& f) {
+  const detail::Peak sampled{theta, f(theta)};
+  return detail::golden_maximum(f, theta - h, theta + h, 1e-12, sampled);
+}
+
+/// Replaces the sampled extremes of the checks with the extremes found near them.
+void refine_extremes(const CamDesign& d, double h, CamChecks& r) {
+  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
+  const bool flat = d.follower.contact == Contact::flat_face;
+  {
+    const detail::Peak p = refine(r.pressure_angle_max.theta, h,
+                                  [&](double t) { return std::abs(contact_at(d, t).pressure_angle); });
+    r.pressure_angle_max = {contact_at(d, p.x).pressure_angle, p.x};
+  }
+  if (flat && std::isfinite(r.rho_profile_min.value)) {
+    const detail::Peak p = refine(r.rho_profile_min.theta, h, [&](double t) { return -1 / contact_at(d, t).curvature_profile; });
+    r.rho_profile_min = r.rho_pitch_min = {-p.value, p.x};
+  }
+  if (!flat && std::isfinite(r.rho_pitch_min.value)) {
+    const detail::Peak p = refine(r.rho_pitch_min.theta, h, [&](double t) { return contact_at(d, t).curvature_pitch; });
+    r.rho_pitch_min = {1 / p.value, p.x};
+    r.rho_profile_min = {1 / p.value - Rr, p.x};
+  }
+  if (!flat && std::isfinite(r.rho_concave_min.value)) {
+    const detail::Peak p = refine(r.rho_concave_min.theta, h, [&](double t) { return -contact_at(d, t).curvature_pitch; });
+    r.rho_concave_min = {1 / p.value + Rr, p.x};
+  }
 }
 
 }  // namespace
@@ -64,6 +111,8 @@ CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
     r.undercut = r.undercut || fold;
   }
   if (d.follower.contact != Contact::flat_face) r.face_min = r.face_max = 0;
+  refine_extremes(d, two_pi / n, r);
+  r.radius_max = largest_radius(d);
   r.pressure_angle_exceeded = std::abs(r.pressure_angle_max.value) > options.pressure_angle_limit;
   try {
     r.base_radius_min = smallest_base_radius(d, options.pressure_angle_limit, std::min(n, 1440));
@@ -73,24 +122,38 @@ CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
   return r;
 }
 
+ValueAt largest_radius(const CamDesign& d) {
+  auto radius = [&](double theta) {
+    const Vec2 p = contact_at(d, theta).contact;
+    return std::hypot(p.x, p.y);
+  };
+  const detail::Peak p = detail::maximum_over_turn(d.program, radius, 720);
+  return {p.value, p.x};
+}
+
 double smallest_base_radius(const CamDesign& d, double limit, int samples) {
   const Follower& f = d.follower;
   const double sigma = rotation_sign(d.rotation);
   const double Rr = f.contact == Contact::roller ? f.roller_radius : 0;
   if (f.motion == FollowerMotion::translating) {
-    double need = 0;
-    for (int i = 0; i < samples; ++i) {
-      const Motion m = d.program.at(d.program.start() + two_pi * i / samples);
-      if (f.contact == Contact::flat_face)
-        need = std::max(need, -(m.s + m.d2s));
-      else
-        need = std::max(need, std::abs(m.ds - sigma * f.offset) / std::tan(limit) - m.s);
-    }
-    if (f.contact == Contact::flat_face) return need;
+    // The bound is the supremum over the turn, found piece by piece (a sampled maximum would
+    // be short of it, leaving a cam "at the limit" cusped or over the limit).
+    auto flat_need = [&](double theta) {
+      const Motion m = d.program.at(theta);
+      return -(m.s + m.d2s);
+    };
+    auto pitch_need = [&](double theta) {
+      const Motion m = d.program.at(theta);
+      return std::abs(m.ds - sigma * f.offset) / std::tan(limit) - m.s;
+    };
+    if (f.contact == Contact::flat_face) return std::max(0.0, detail::maximum_over_turn(d.program, flat_need, samples).value);
+    const double need = std::max(0.0, detail::maximum_over_turn(d.program, pitch_need, samples).value);
     return std::max(std::hypot(need, f.offset) - Rr, Rr);
   }
-  // Oscillating: march up from the smallest admissible circle, then bisect.
-  auto meets = [&](double rb) {
+  // Oscillating: march up from the smallest admissible circle and bisect on the sampled
+  // pressure angle (fast, never above the true one), then finish the bisection on the largest
+  // pressure angle found between the samples, so that the result meets the limit.
+  auto meets = [&](double rb, bool found) {
     CamDesign trial = d;
     trial.base_radius = rb;
     try {
@@ -98,22 +161,32 @@ double smallest_base_radius(const CamDesign& d, double limit, int samples) {
     } catch (const DesignError&) {
       return false;
     }
-    return max_pressure_angle(trial, samples) <= limit;
+    return (found ? max_pressure_angle(trial, samples) : sampled_pressure_angle(trial, samples)) <= limit;
   };
   const double reach = f.contact == Contact::flat_face ? f.face_offset + f.pivot_distance
                                                        : f.pivot_distance + f.arm_length - Rr;
   double lo = std::max(Rr, 1e-3 * reach), hi = lo;
-  while (!meets(hi)) {
+  auto fail = [&] {
+    throw DesignError("base_radius", fmt::format("no base circle up to {:.6g} mm keeps the pressure angle within {:.6g} deg",
+                                                 reach, limit * 180 / std::numbers::pi));
+  };
+  while (!meets(hi, false)) {
     lo = hi;
     hi *= 1.15;
-    if (hi > reach) {
-      throw DesignError("base_radius", fmt::format("no base circle up to {} mm keeps the pressure angle within {} deg",
-                                                   reach, limit * 180 / std::numbers::pi));
-    }
+    if (hi > reach) fail();
+  }
+  for (int k = 0; k < 40 && hi - lo > 1e-4 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (meets(mid, false) ? hi : lo) = mid;
+  }
+  while (!meets(hi, true)) {  // the sampled bracket may be a hair short of the found maximum
+    lo = hi;
+    hi *= 1.001;
+    if (hi > reach) fail();
   }
   for (int k = 0; k < 40 && hi - lo > 1e-6 * hi; ++k) {
     const double mid = 0.5 * (lo + hi);
-    (meets(mid) ? hi : lo) = mid;
+    (meets(mid, true) ? hi : lo) = mid;
   }
   return hi;
 }

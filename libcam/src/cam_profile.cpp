@@ -1,5 +1,7 @@
 #include <gearkit/cam/cam_profile.hpp>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -59,18 +61,31 @@ CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options)
   CamProfile out;
   const double sigma = rotation_sign(d.rotation);
   const CounterClockwiseCurve curve{d, sigma};
-  const FitOptions fit{options.tolerance, 24};
+  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
+  // The tolerance must hold for what is exported: the profile (the pitch curve offset by the
+  // roller) and the tool path, not only for the fitted curve.
+  FitOptions fit{options.tolerance, 24, {}};
+  if (Rr > 0) fit.offsets.push_back(Rr);
+  if (options.cutter_radius) fit.offsets.push_back(Rr - *options.cutter_radius);
   BiarcSpline spline;
   try {
     spline = fit_biarcs(curve, breaks_of(d, sigma), fit, true);
-  } catch (const GeometryError&) {
-    if (d.follower.contact != Contact::flat_face) throw;
+  } catch (const FitError& e) {
+    if (d.follower.contact != Contact::flat_face) {
+      throw GeometryError(fmt::format("cannot fit arcs within {:.6g} mm to the cam near cam angle {:.6g} deg "
+                                      "(a cusp or a corner of the profile)",
+                                      options.tolerance, std::fmod(curve.theta_of(e.parameter()), two_pi) * 180 / std::numbers::pi));
+    }
     // A flat face whose envelope has cusps: no arcs fit the folds; keep the envelope as it is.
     out.profile.push_back(polyline_of(d, 3600, sigma));
     out.profile_is_polyline = true;
     return out;
   }
   out.biarcs = spline.knots.size() - 1;
+  std::size_t next = 1;
+  out.pitch_error = spline.max_error[0];
+  out.profile_error = Rr > 0 ? spline.max_error[next++] : spline.max_error[0];
+  if (options.cutter_radius) out.tool_path_error = spline.max_error[next];
   if (d.follower.contact == Contact::flat_face) {
     out.profile.push_back(pieces_of(spline));
     if (options.cutter_radius) {
@@ -81,7 +96,6 @@ CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options)
     return out;
   }
   out.pitch_curve = pieces_of(spline);
-  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
   const OffsetCurve profile = offset_closed_spline(spline, Rr);
   out.profile = profile.loops;
   out.profile_trimmed = profile.trimmed;

@@ -139,6 +139,15 @@ std::optional<Law> law_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::vector<double> law_breaks(Law law) {
+  switch (law) {
+    case Law::parabolic: return {0.5};
+    case Law::modified_trapezoid: return {0.125, 0.375, 0.625, 0.875};
+    case Law::modified_sine: return {0.125, 0.875};
+    default: return {};
+  }
+}
+
 std::vector<std::string> law_names() {
   std::vector<std::string> out;
   for (const NamedLaw& n : kNames) out.emplace_back(n.name);

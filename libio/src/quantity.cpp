@@ -104,6 +104,9 @@ Dim dimension_of(Quantity q) {
     case Quantity::moment_of_inertia: return {2, 1, 0, 0};
     case Quantity::stiffness: return {0, 1, -2, 0};
     case Quantity::pressure: return kPressureD;
+    case Quantity::damping: return {0, 1, -1, 0};
+    case Quantity::torsional_stiffness: return {2, 1, -2, -1};
+    case Quantity::torsional_damping: return {2, 1, -1, -1};
   }
   return kNone;
 }
@@ -237,6 +240,9 @@ std::string_view describe(Quantity q) {
     case Quantity::moment_of_inertia: return "a moment of inertia";
     case Quantity::stiffness: return "a stiffness";
     case Quantity::pressure: return "a pressure";
+    case Quantity::damping: return "a damping coefficient";
+    case Quantity::torsional_stiffness: return "a torsional stiffness";
+    case Quantity::torsional_damping: return "a torsional damping coefficient";
   }
   return "a quantity";
 }

@@ -61,7 +61,7 @@ int run_cam_command(kin::CommandContext& context) {
   desc.add_options()
       ("file", io::po::value<std::string>()->required(), "cam model (YAML, see docs/cam.md)")
       ("dxf", io::po::value<std::string>(), "write the cam (profile, pitch curve, base circle, tool path) as DXF R2000")
-      ("dxf-lines-arcs", "write LINE and ARC entities instead of LWPOLYLINE (old readers)")
+      ("dxf-lines-arcs", "write LINE and ARC entities instead of LWPOLYLINE bulges (still DXF R2000)")
       ("svg", io::po::value<std::string>(), "write an SVG drawing of the cam and its follower")
       ("follower-at", io::po::value<std::string>(), "cam angle of the follower in the SVG drawing (default 0 deg)")
       ("plot", io::po::value<std::string>(), "write the s-v-a-j diagrams as SVG")
@@ -86,13 +86,9 @@ int run_cam_command(kin::CommandContext& context) {
   } catch (const gc::GeometryError& e) {
     io::fail_at(io::SourceMark{options.file, 0, 0}, fmt::format("cannot build the cam profile: {}", e.what()));
   }
-  if (!result.profile.profile_trimmed) {
-    std::vector<gc::Vec2> analytic;
-    for (const gc::ContactState& c : result.checks.samples) analytic.push_back(c.contact);
-    result.deviation_mm = gc::max_deviation(result.profile.profile, analytic);
-  } else {
-    result.deviation_mm = NAN;  // the analytic offset folds over itself there: no meaningful comparison
-  }
+  // The largest distance of the exported arcs from the analytic profile, found during the fit;
+  // where the offset folds (undercut) the trimmed-away part has no analytic counterpart.
+  result.deviation_mm = result.profile.profile_error;
   result.jumps = gc::continuity_check(model.design.program);
   result.samples = sample_turn(model);
 

@@ -9,6 +9,10 @@
 
 namespace gearkit::plugins::cam {
 
+/// Largest length accepted in a cam model [mm] (docs/cli.md): 10 m keeps the 1e-6 mm fit
+/// tolerance far above the rounding of coordinates (1e-16 relative).
+inline constexpr double kMaxLengthMm = 10000;
+
 struct CamModel {
   explicit CamModel(gearkit::cam::CamDesign d) : design(std::move(d)) {}
 
@@ -20,6 +24,7 @@ struct CamModel {
   int samples = 360;                  ///< cam angles in the report's profile points and CSV
   double follower_at = 0;             ///< cam angle of the follower in the SVG drawing [rad]
   std::optional<double> cutter_radius_mm;
+  double pivot_radius_mm = 0;         ///< oscillating: pivot boss radius, for the clearance check
 };
 
 /// Reads the `motion:` list of a mapping (docs/cam.md): the one syntax for motion programs, in

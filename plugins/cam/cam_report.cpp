@@ -1,8 +1,11 @@
 #include "cam_report.hpp"
 
+#include "cam_text.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 namespace gearkit::plugins::cam {
@@ -11,55 +14,55 @@ namespace gc = gearkit::cam;
 
 namespace {
 
-constexpr double deg_per_rad = 180 / std::numbers::pi;
-
-double deg(double rad) { return rad * deg_per_rad; }
-/// A cam angle in [0, 360) deg.
-double angle_deg(double rad) {
-  const double d = std::fmod(deg(rad), 360.0);
-  return d < 0 ? d + 360 : d;
-}
-
-std::string kind_name(gc::SegmentKind k) {
-  switch (k) {
+std::string kind_name(const gc::Segment& s) {
+  switch (s.kind) {
     case gc::SegmentKind::rise: return "rise";
     case gc::SegmentKind::dwell: return "dwell";
     case gc::SegmentKind::fall: return "return";
     case gc::SegmentKind::table: return "table";
+    case gc::SegmentKind::polynomial: return "polynomial";
   }
   return "?";
 }
 
-nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+/// What shapes a segment: its law, the table's interpolation, or the polynomial's degree.
+std::string shape_name(const gc::Segment& s) {
+  switch (s.kind) {
+    case gc::SegmentKind::rise:
+    case gc::SegmentKind::fall: return std::string(gc::name_of(s.law));
+    case gc::SegmentKind::table:
+      return s.interpolation == gc::TableInterpolation::pchip   ? "pchip (shape-preserving)"
+             : s.interpolation == gc::TableInterpolation::cubic ? "cubic spline"
+                                                                : "quintic B-spline";
+    case gc::SegmentKind::polynomial: {
+      int n = 0;
+      for (const auto* e : {&s.at_start, &s.at_end}) n += e->s.has_value() + e->v.has_value() + e->a.has_value() + e->j.has_value();
+      return fmt::format("polynomial of degree {}", n - (s.at_start.s ? 1 : 0));
+    }
+    case gc::SegmentKind::dwell: return "-";
+  }
+  return "-";
+}
 
 std::string contact_name(gc::Contact c) {
   return c == gc::Contact::roller ? "roller" : c == gc::Contact::flat_face ? "flat_face" : "knife_edge";
 }
 
-}  // namespace
-
-io::Report cam_report(const CamModel& model, const CamResult& r, const std::string& file) {
+void program_section(const CamModel& model, io::Report& rep) {
   const gc::CamDesign& d = model.design;
-  const bool osc = d.follower.motion == gc::FollowerMotion::oscillating;
-  const std::string s_unit = osc ? "deg" : "mm";
-  const auto s_value = [&](double s) { return osc ? deg(s) : s; };
-  io::Report rep;
-  rep.title = fmt::format("Cam {}", model.name.empty() ? file : model.name);
-  nlohmann::json& j = rep.json;
-  j["file"] = file;
-  j["follower"] = {{"type", osc ? "oscillating" : "translating"}, {"contact", contact_name(d.follower.contact)}};
-  j["rotation"] = d.rotation == gc::Rotation::ccw ? "ccw" : "cw";
-  j["base_radius_mm"] = d.base_radius;
-
-  io::Table program{"Motion program", {"segment", "from [deg]", "to [deg]", "law", fmt::format("lift [{}]", s_unit)}, {}};
+  const FollowerUnits u(model);
+  io::Table program{"Motion program", {"segment", "from [deg]", "to [deg]", "shape", fmt::format("lift [{}]", u.s_unit)}, {}};
   for (const gc::Segment& s : d.program.segments()) {
     const bool moves = s.kind == gc::SegmentKind::rise || s.kind == gc::SegmentKind::fall;
-    program.add_row({kind_name(s.kind), io::fixed(deg(s.start), 2), io::fixed(deg(s.end), 2),
-                     moves ? std::string(gc::name_of(s.law)) : s.kind == gc::SegmentKind::table ? "cubic spline" : "-",
-                     moves ? io::fixed(s_value(s.lift), 4) : "-"});
+    program.add_row({kind_name(s), io::fixed(deg(s.start), 2), io::fixed(deg(s.end), 2), shape_name(s),
+                     moves ? io::fixed(u.s_value(s.lift), 4) : "-"});
   }
   rep.tables.push_back(program);
+}
 
+void checks_section(const CamModel& model, const CamResult& r, io::Report& rep) {
+  const gc::CamDesign& d = model.design;
+  const bool osc = d.follower.motion == gc::FollowerMotion::oscillating;
   const gc::CamChecks& c = r.checks;
   io::Table checks{"Checks", {"quantity", "value", "at cam angle [deg]"}, {}};
   checks.add_row({"max pressure angle [deg]", io::fixed(deg(c.pressure_angle_max.value), 3),
@@ -67,9 +70,8 @@ io::Report cam_report(const CamModel& model, const CamResult& r, const std::stri
   checks.add_row({"pressure angle limit [deg]", io::fixed(deg(model.pressure_angle_limit), 2), "-"});
   const auto radius = [](const gc::ValueAt& v) { return std::isfinite(v.value) ? io::fixed(v.value, 3) : "none"; };
   const auto where = [](const gc::ValueAt& v) { return std::isfinite(v.value) ? io::fixed(angle_deg(v.theta), 2) : "-"; };
-  if (d.follower.contact != gc::Contact::flat_face) {
+  if (d.follower.contact != gc::Contact::flat_face)
     checks.add_row({"min convex radius of pitch curve [mm]", radius(c.rho_pitch_min), where(c.rho_pitch_min)});
-  }
   checks.add_row({"min convex radius of profile [mm]", radius(c.rho_profile_min), where(c.rho_profile_min)});
   checks.add_row({"min concave radius of profile [mm]", radius(c.rho_concave_min), where(c.rho_concave_min)});
   checks.add_row({"undercut", c.undercut ? "yes" : "no", "-"});
@@ -77,92 +79,113 @@ io::Report cam_report(const CamModel& model, const CamResult& r, const std::stri
                                        ? "smallest base radius for a convex profile [mm]"
                                        : fmt::format("smallest base radius for {} deg [mm]",
                                                      io::fixed(deg(model.pressure_angle_limit), 1));
-  checks.add_row({rb_criterion, std::isfinite(c.base_radius_min) ? io::fixed(c.base_radius_min, 3) : "none", "-"});
+  checks.add_row({rb_criterion, std::isfinite(c.base_radius_min) ? io::fixed(c.base_radius_min, 5) : "none", "-"});
+  checks.add_row({"largest radius of the cam [mm]", io::fixed(c.radius_max.value, 3), io::fixed(angle_deg(c.radius_max.theta), 2)});
+  if (osc) checks.add_row({"clearance to the pivot [mm]", io::fixed(pivot_clearance(model, r), 3), "-"});
   if (d.follower.contact == gc::Contact::flat_face) {
     checks.add_row({"face contact from [mm]", io::fixed(c.face_min, 3), "-"});
     checks.add_row({"face contact to [mm]", io::fixed(c.face_max, 3), "-"});
   }
   rep.tables.push_back(checks);
+}
 
-  j["pressure_angle_max_deg"] = deg(c.pressure_angle_max.value);
-  j["pressure_angle_max_at_deg"] = angle_deg(c.pressure_angle_max.theta);
-  j["pressure_angle_limit_deg"] = deg(model.pressure_angle_limit);
-  j["rho_min_mm"] = finite_or_null(c.rho_profile_min.value);
-  j["rho_min_at_deg"] = angle_deg(c.rho_profile_min.theta);
-  j["rho_pitch_min_mm"] = finite_or_null(c.rho_pitch_min.value);
-  j["rho_pitch_min_at_deg"] = angle_deg(c.rho_pitch_min.theta);
-  j["rho_concave_min_mm"] = finite_or_null(c.rho_concave_min.value);
+void checks_json(const CamModel& model, const CamResult& r, nlohmann::json& j) {
+  const gc::CamChecks& c = r.checks;
+  j["pressure_angle_max_deg"] = number(deg(c.pressure_angle_max.value));
+  j["pressure_angle_max_at_deg"] = number(angle_deg(c.pressure_angle_max.theta));
+  j["pressure_angle_limit_deg"] = number(deg(model.pressure_angle_limit));
+  j["rho_min_mm"] = number(c.rho_profile_min.value);
+  j["rho_min_at_deg"] = number(angle_deg(c.rho_profile_min.theta));
+  j["rho_pitch_min_mm"] = number(c.rho_pitch_min.value);
+  j["rho_pitch_min_at_deg"] = number(angle_deg(c.rho_pitch_min.theta));
+  j["rho_concave_min_mm"] = number(c.rho_concave_min.value);
   j["undercut"] = c.undercut;
-  j["base_radius_min_mm"] = finite_or_null(c.base_radius_min);
-  if (d.follower.contact == gc::Contact::flat_face) {
-    j["face_contact_min_mm"] = c.face_min;
-    j["face_contact_max_mm"] = c.face_max;
-    j["face_width_mm"] = c.face_max - c.face_min;
+  j["base_radius_min_mm"] = number(c.base_radius_min);
+  j["radius_max_mm"] = number(c.radius_max.value);
+  j["radius_max_at_deg"] = number(angle_deg(c.radius_max.theta));
+  if (model.design.follower.motion == gc::FollowerMotion::oscillating) j["pivot_clearance_mm"] = number(pivot_clearance(model, r));
+  if (model.design.follower.contact == gc::Contact::flat_face) {
+    j["face_contact_min_mm"] = number(c.face_min);
+    j["face_contact_max_mm"] = number(c.face_max);
+    j["face_width_mm"] = number(c.face_max - c.face_min);
   }
+}
 
-  // Peaks of velocity, acceleration and jerk, per radian and (with a cam speed) per second.
-  {
-    double peak[3] = {0, 0, 0}, at[3] = {0, 0, 0};
-    for (const gc::ContactState& s : c.samples) {
-      const double v[3] = {s.motion.ds, s.motion.d2s, s.motion.d3s};
-      for (int k = 0; k < 3; ++k)
-        if (std::abs(v[k]) > std::abs(peak[k])) peak[k] = v[k], at[k] = s.theta;
-    }
-    const std::string u = osc ? "rad" : "mm";
-    io::Table peaks{"Motion peaks", {"quantity", fmt::format("per rad [{}/rad^n]", u), "at cam angle [deg]"}, {}};
-    if (model.omega) peaks.header.push_back(fmt::format("per second [{}/s^n]", u));
-    const char* names[3] = {"velocity", "acceleration", "jerk"};
-    const char* per_rad_keys[3] = {"velocity_max_per_rad", "acceleration_max_per_rad2", "jerk_max_per_rad3"};
-    const char* per_s_keys[3] = {osc ? "omega_max_rad_s" : "v_max_mm_s", osc ? "alpha_max_rad_s2" : "a_max_mm_s2",
-                                 osc ? "jerk_max_rad_s3" : "j_max_mm_s3"};
-    for (int k = 0; k < 3; ++k) {
-      std::vector<std::string> row{names[k], fmt::format("{:.6g}", peak[k]), io::fixed(angle_deg(at[k]), 2)};
-      j[per_rad_keys[k]] = peak[k];
-      if (model.omega) {
-        const double per_s = peak[k] * std::pow(*model.omega, k + 1);
-        row.push_back(fmt::format("{:.6g}", per_s));
-        j[per_s_keys[k]] = per_s;
-      }
-      peaks.add_row(row);
-    }
-    rep.tables.push_back(peaks);
+/// Peaks of velocity, acceleration and jerk, per radian and (with a cam speed) per second.
+void peaks_section(const CamModel& model, const CamResult& r, io::Report& rep) {
+  const bool osc = model.design.follower.motion == gc::FollowerMotion::oscillating;
+  double peak[3] = {0, 0, 0}, at[3] = {0, 0, 0};
+  for (const gc::ContactState& s : r.checks.samples) {
+    const double v[3] = {s.motion.ds, s.motion.d2s, s.motion.d3s};
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(v[k]) > std::abs(peak[k])) peak[k] = v[k], at[k] = s.theta;
   }
+  const std::string u = osc ? "rad" : "mm";
+  io::Table peaks{"Motion peaks", {"quantity", fmt::format("per rad [{}/rad^n]", u), "at cam angle [deg]"}, {}};
+  if (model.omega) peaks.header.push_back(fmt::format("per second [{}/s^n]", u));
+  const char* names[3] = {"velocity", "acceleration", "jerk"};
+  const char* per_rad_keys[3] = {"velocity_max_per_rad", "acceleration_max_per_rad2", "jerk_max_per_rad3"};
+  const char* per_s_keys[3] = {osc ? "omega_max_rad_s" : "v_max_mm_s", osc ? "alpha_max_rad_s2" : "a_max_mm_s2",
+                               osc ? "jerk_max_rad_s3" : "j_max_mm_s3"};
+  for (int k = 0; k < 3; ++k) {
+    std::vector<std::string> row{names[k], fmt::format("{:.6g}", peak[k]), io::fixed(angle_deg(at[k]), 2)};
+    rep.json[per_rad_keys[k]] = number(peak[k]);
+    if (model.omega) {
+      const double per_s = peak[k] * std::pow(*model.omega, k + 1);
+      row.push_back(fmt::format("{:.6g}", per_s));
+      rep.json[per_s_keys[k]] = number(per_s);
+    }
+    peaks.add_row(row);
+  }
+  rep.tables.push_back(peaks);
+}
 
+void motion_section(const CamModel& model, const CamResult& r, io::Report& rep) {
+  const FollowerUnits u(model);
   io::Table motion{"Follower motion",
-                   {"theta [deg]", fmt::format("{} [{}]", osc ? "psi" : "s", s_unit),
-                    fmt::format("d/dtheta [{}/rad]", osc ? "rad" : "mm"), fmt::format("d2/dtheta2 [{}/rad^2]", osc ? "rad" : "mm"),
-                    "pressure angle [deg]"},
+                   {"theta [deg]", fmt::format("{} [{}]", u.s_name, u.s_unit), fmt::format("d/dtheta [{}/rad]", u.d_unit),
+                    fmt::format("d2/dtheta2 [{}/rad^2]", u.d_unit), "pressure angle [deg]"},
                    {}};
   nlohmann::json points = nlohmann::json::array();
   const int every = std::max<int>(1, static_cast<int>(r.samples.size()) / 36);
   for (std::size_t i = 0; i < r.samples.size(); ++i) {
     const gc::ContactState& s = r.samples[i];
-    points.push_back({s.contact.x, s.contact.y});
+    points.push_back({number(s.contact.x), number(s.contact.y)});
     if (i % every == 0)
-      motion.add_row({io::fixed(deg(s.theta), 2), io::fixed(s_value(s.motion.s), 4), io::fixed(s.motion.ds, 5),
+      motion.add_row({io::fixed(deg(s.theta), 2), io::fixed(u.s_value(s.motion.s), 4), io::fixed(s.motion.ds, 5),
                       io::fixed(s.motion.d2s, 5), io::fixed(deg(s.pressure_angle), 3)});
   }
   rep.tables.push_back(motion);
-  j["profile_points"] = points;
-  j["profile_points_count"] = r.samples.size();
+  rep.json["profile_points"] = points;
+  rep.json["profile_points_count"] = r.samples.size();
+}
 
-  const std::size_t arcs = [&] {
-    std::size_t n = 0;
-    for (const auto& loop : r.profile.profile) n += gc::merge_pieces(loop).size();
-    return n;
-  }();
+void profile_section(const CamModel& model, const CamResult& r, io::Report& rep) {
+  std::size_t arcs = 0;
+  for (const auto& loop : r.profile.profile) arcs += gc::merge_pieces(loop).size();
   io::Table prof{"Profile", {"quantity", "value"}, {}};
   prof.add_row({"biarcs fitted", std::to_string(r.profile.biarcs)});
   prof.add_row({"profile arcs (merged)", std::to_string(arcs)});
-  prof.add_row({"fit tolerance [mm]", fmt::format("{}", model.tolerance_mm)});
-  prof.add_row({"max deviation from analytic profile [mm]", fmt::format("{:.2e}", r.deviation_mm)});
-  if (model.cutter_radius_mm) prof.add_row({"cutter radius [mm]", io::fixed(*model.cutter_radius_mm, 3)});
+  prof.add_row({"fit tolerance [mm]", fmt::format("{:.6g}", model.tolerance_mm)});
+  prof.add_row({"max deviation of the profile arcs from the analytic profile [mm]", fmt::format("{:.3e}", r.deviation_mm)});
+  if (model.cutter_radius_mm) {
+    prof.add_row({"cutter radius [mm]", io::fixed(*model.cutter_radius_mm, 3)});
+    prof.add_row({"max deviation of the tool path [mm]", fmt::format("{:.3e}", r.profile.tool_path_error)});
+  }
   rep.tables.push_back(prof);
+  nlohmann::json& j = rep.json;
   j["profile_arcs"] = arcs;
-  j["fit_tolerance_mm"] = model.tolerance_mm;
-  j["profile_deviation_mm"] = finite_or_null(r.deviation_mm);
-  if (model.cutter_radius_mm) j["cutter_radius_mm"] = *model.cutter_radius_mm;
+  j["fit_tolerance_mm"] = number(model.tolerance_mm);
+  j["profile_deviation_mm"] = number(r.deviation_mm);
+  if (model.cutter_radius_mm) {
+    j["cutter_radius_mm"] = number(*model.cutter_radius_mm);
+    j["tool_path_deviation_mm"] = number(r.profile.tool_path_error);
+  }
+}
 
+void geometry_warnings(const CamModel& model, const CamResult& r, io::Report& rep) {
+  const gc::CamDesign& d = model.design;
+  const gc::CamChecks& c = r.checks;
   if (c.pressure_angle_exceeded) {
     rep.warnings.push_back(fmt::format("pressure angle {} deg at cam angle {} deg exceeds the limit {} deg",
                                        io::fixed(deg(c.pressure_angle_max.value), 2),
@@ -177,14 +200,17 @@ io::Report cam_report(const CamModel& model, const CamResult& r, const std::stri
                           io::fixed(angle_deg(u.theta), 2), io::fixed(angle_deg(u.value), 2),
                           io::fixed(d.follower.roller_radius, 3), io::fixed(c.rho_pitch_min.value, 3))
             : fmt::format("cusp in the flat-faced profile from cam angle {} deg to {} deg (radius of curvature <= 0); "
-                          "enlarge the base circle to at least {} mm",
+                          "enlarge the base circle to more than {} mm",
                           io::fixed(angle_deg(u.theta), 2), io::fixed(angle_deg(u.value), 2),
-                          io::fixed(c.base_radius_min, 3)));
+                          io::fixed(c.base_radius_min, 5)));
   }
-  for (const gc::JoinJump& jump : r.jumps) {
-    rep.warnings.push_back(fmt::format("{} jumps at cam angle {} deg: {:.6g} before, {:.6g} after (per rad{})",
-                                       jump.quantity, io::fixed(angle_deg(jump.theta), 2), jump.before, jump.after,
-                                       jump.quantity == "acceleration" ? "^2" : ""));
+  if (d.follower.motion == gc::FollowerMotion::oscillating && pivot_clearance(model, r) <= 0) {
+    rep.warnings.push_back(fmt::format(
+        "the cam reaches {} mm from its centre (at cam angle {} deg) but the follower's pivot{} is at {} mm: the cam "
+        "would strike the pivot; increase pivot_distance or reduce the cam",
+        io::fixed(c.radius_max.value, 3), io::fixed(angle_deg(c.radius_max.theta), 2),
+        model.pivot_radius_mm > 0 ? fmt::format(" (boss radius {} mm)", io::fixed(model.pivot_radius_mm, 3)) : "",
+        io::fixed(d.follower.pivot_distance, 3)));
   }
   if (r.profile.tool_path_trimmed) {
     rep.warnings.push_back(fmt::format("the cutter (radius {} mm) is larger than the profile's smallest concave "
@@ -196,8 +222,94 @@ io::Report cam_report(const CamModel& model, const CamResult& r, const std::stri
     rep.warnings.push_back("the flat-faced profile has cusps: exported as straight segments through the envelope");
     if (model.cutter_radius_mm) rep.warnings.push_back("no tool path: the profile with cusps cannot be offset");
   }
+}
+
+/// Jumps of s, v, a are warnings (an acceleration jump is a force jump: shock and vibration);
+/// jerk jumps are notes. The many acceleration jumps of a pchip table are one warning.
+void continuity_remarks(const CamModel& model, const CamResult& r, io::Report& rep) {
+  const auto& segs = model.design.program.segments();
+  std::map<std::size_t, std::vector<const gc::JoinJump*>> table_jumps;
+  std::vector<std::string> jerk_places;
+  for (const gc::JoinJump& jump : r.jumps) {
+    const gc::Segment& seg = segs[jump.segment];
+    if (jump.quantity == "jerk") {
+      jerk_places.push_back(fmt::format("{} deg ({:.6g} to {:.6g} per rad^3)", io::fixed(angle_deg(jump.theta), 2),
+                                        jump.before, jump.after));
+      continue;
+    }
+    if (!jump.join && seg.kind == gc::SegmentKind::table) {
+      table_jumps[jump.segment].push_back(&jump);
+      continue;
+    }
+    rep.warnings.push_back(fmt::format("{} jumps at cam angle {} deg{}: {:.6g} before, {:.6g} after (per rad{})",
+                                       jump.quantity, io::fixed(angle_deg(jump.theta), 2),
+                                       jump.join ? "" : fmt::format(" inside the {} segment", kind_name(seg)),
+                                       jump.before, jump.after, jump.quantity == "acceleration" ? "^2" : ""));
+  }
+  for (const auto& [segment, jumps] : table_jumps) {
+    const gc::JoinJump* worst = jumps.front();
+    for (const gc::JoinJump* j : jumps)
+      if (std::abs(j->after - j->before) > std::abs(worst->after - worst->before)) worst = j;
+    rep.warnings.push_back(fmt::format(
+        "the table from {} deg ({}) has {} jumps of {} at its inner points, the largest at {} deg ({:.6g} to {:.6g} "
+        "per rad^2): use interpolation: bspline for continuous acceleration and jerk",
+        io::fixed(deg(segs[segment].start), 2), shape_name(segs[segment]), jumps.size(), worst->quantity,
+        io::fixed(angle_deg(worst->theta), 2), worst->before, worst->after));
+  }
+  if (!jerk_places.empty()) {
+    std::string list;
+    for (const std::string& p : jerk_places) list += (list.empty() ? "" : ", ") + p;
+    rep.notes.push_back(fmt::format("jerk jumps (finite steps of d3s/dtheta3, harmless at low speed) at cam angle {}", list));
+  }
+}
+
+void table_remarks(const CamModel& model, io::Report& rep) {
+  const FollowerUnits u(model);
+  const auto& program = model.design.program;
+  for (const gc::Overshoot& o : gc::table_overshoots(program)) {
+    rep.warnings.push_back(fmt::format("the cubic spline through the table from {} deg reaches s = {} {} at cam angle "
+                                       "{} deg, beyond its points' range ({} {}): use interpolation: pchip",
+                                       io::fixed(deg(program.segments()[o.segment].start), 2), io::fixed(u.s_value(o.s), 4),
+                                       u.s_unit, io::fixed(angle_deg(o.theta), 2), io::fixed(u.s_value(o.limit), 4), u.s_unit));
+  }
+  for (std::size_t i = 0; i < program.segments().size(); ++i) {
+    const gc::Segment& s = program.segments()[i];
+    if (s.kind != gc::SegmentKind::table || s.interpolation != gc::TableInterpolation::bspline) continue;
+    rep.notes.push_back(fmt::format("the B-spline table from {} deg passes within {} {} of its points (they are its "
+                                    "control polygon)",
+                                    io::fixed(deg(s.start), 2), io::fixed(u.s_value(gc::table_fit_residual(program, i)), 4),
+                                    u.s_unit));
+  }
+}
+
+}  // namespace
+
+double pivot_clearance(const CamModel& model, const CamResult& r) {
+  return model.design.follower.pivot_distance - model.pivot_radius_mm - r.checks.radius_max.value;
+}
+
+io::Report cam_report(const CamModel& model, const CamResult& result, const std::string& file) {
+  const gc::CamDesign& d = model.design;
+  const bool osc = d.follower.motion == gc::FollowerMotion::oscillating;
+  io::Report rep;
+  rep.title = fmt::format("Cam {}", model.name.empty() ? file : model.name);
+  nlohmann::json& j = rep.json;
+  j["file"] = file;
+  j["follower"] = {{"type", osc ? "oscillating" : "translating"}, {"contact", contact_name(d.follower.contact)}};
+  j["rotation"] = d.rotation == gc::Rotation::ccw ? "ccw" : "cw";
+  j["base_radius_mm"] = number(d.base_radius);
+  program_section(model, rep);
+  checks_section(model, result, rep);
+  checks_json(model, result, j);
+  peaks_section(model, result, rep);
+  motion_section(model, result, rep);
+  profile_section(model, result, rep);
+  geometry_warnings(model, result, rep);
+  continuity_remarks(model, result, rep);
+  table_remarks(model, rep);
   if (model.omega) {
-    j["speed_rad_s"] = *model.omega;
+    j["speed_rad_s"] = number(*model.omega);
+    j["speed_rpm"] = number(*model.omega * 30 / std::numbers::pi);
     rep.notes.push_back(fmt::format("cam speed {} rad/s ({} rpm): per-second values in --csv and --plot",
                                     io::fixed(*model.omega, 4), io::fixed(*model.omega * 30 / std::numbers::pi, 2)));
   }

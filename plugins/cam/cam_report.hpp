@@ -15,10 +15,14 @@ struct CamResult {
   gearkit::cam::CamProfile profile;
   std::vector<gearkit::cam::JoinJump> jumps;
   std::vector<gearkit::cam::ContactState> samples;  ///< model.samples cam angles
-  double deviation_mm = 0;  ///< fitted/offset profile vs the analytic profile
+  double deviation_mm = 0;  ///< exported profile arcs vs the analytic profile (found during the fit)
 };
 
 /// The report: design, motion program, checks, profile summary, warnings; JSON keys with units.
 io::Report cam_report(const CamModel& model, const CamResult& result, const std::string& file);
+
+/// Oscillating followers: the gap between the circle the cam sweeps and the pivot (less its
+/// boss radius) [mm]; <= 0 means the cam strikes the pivot.
+double pivot_clearance(const CamModel& model, const CamResult& result);
 
 }  // namespace gearkit::plugins::cam

@@ -47,7 +47,7 @@ TEST(ArcSpline, DirectionsAreUnitVectorsAtTheirAngle) {
 }
 
 TEST(ArcSpline, CircleIsFittedByArcsOfItsOwnRadius) {
-  const auto spline = fit_biarcs([](double t) { return circle(t, 3, -2, 25); }, uniform_breaks(8), {1e-6, 24}, true);
+  const auto spline = fit_biarcs([](double t) { return circle(t, 3, -2, 25); }, uniform_breaks(8), {1e-6, 24, {}}, true);
   for (const Piece& p : pieces_of(spline)) {
     EXPECT_NEAR(p.radius, 25, 1e-9);
     EXPECT_NEAR(p.cx, 3, 1e-9);
@@ -63,7 +63,7 @@ TEST(ArcSpline, CircleIsFittedByArcsOfItsOwnRadius) {
 
 TEST(ArcSpline, FitStaysWithinTolerance) {
   for (double tol : {1e-2, 1e-4}) {
-    const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(12), {tol, 24}, true);
+    const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(12), {tol, 24, {}}, true);
     std::vector<std::pair<double, double>> pts;
     for (int i = 0; i < 2000; ++i) pts.push_back({50 * std::cos(2 * pi * i / 2000), 30 * std::sin(2 * pi * i / 2000)});
     EXPECT_LE(max_distance(pieces_of(spline), pts), tol);
@@ -79,7 +79,7 @@ TEST(ArcSpline, FitStaysWithinTolerance) {
 }
 
 TEST(ArcSpline, CgalOffsetOfACircleIsTheConcentricCircle) {
-  const auto spline = fit_biarcs([](double t) { return circle(t, 0, 0, 40); }, uniform_breaks(6), {1e-6, 24}, true);
+  const auto spline = fit_biarcs([](double t) { return circle(t, 0, 0, 40); }, uniform_breaks(6), {1e-6, 24, {}}, true);
   for (double d : {10.0, -7.5}) {
     const OffsetCurve off = offset_closed_spline(spline, d);
     ASSERT_EQ(off.loops.size(), 1u);
@@ -98,7 +98,7 @@ TEST(ArcSpline, CgalInsetMatchesTheAnalyticNormalOffset) {
   // Ellipse a = 50, b = 30: smallest radius of curvature b^2/a = 18 mm. An inset of 10 mm does not
   // fold; its exact points are X(t) - 10 n(t) with n the outward unit normal.
   const double tol = 1e-4;
-  const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(36), {tol, 24}, true);
+  const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(36), {tol, 24, {}}, true);
   const OffsetCurve off = offset_closed_spline(spline, 10);
   ASSERT_EQ(off.loops.size(), 1u);
   EXPECT_FALSE(off.trimmed);
@@ -124,7 +124,7 @@ TEST(ArcSpline, CgalInsetMatchesTheAnalyticNormalOffset) {
 
 TEST(ArcSpline, FoldingInsetIsTrimmedToPointsAtTheOffsetDistance) {
   // Inset by 25 mm > 18 mm: the raw offset folds near the ends of the major axis (swallowtails).
-  const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(36), {1e-4, 24}, true);
+  const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(36), {1e-4, 24, {}}, true);
   const OffsetCurve off = offset_closed_spline(spline, 25);
   EXPECT_TRUE(off.trimmed);
   ASSERT_FALSE(off.loops.empty());
@@ -144,7 +144,7 @@ TEST(ArcSpline, FoldingInsetIsTrimmedToPointsAtTheOffsetDistance) {
 }
 
 TEST(ArcSpline, InsetLargerThanTheRegionFails) {
-  const auto spline = fit_biarcs([](double t) { return circle(t, 0, 0, 10); }, uniform_breaks(4), {1e-6, 24}, true);
+  const auto spline = fit_biarcs([](double t) { return circle(t, 0, 0, 10); }, uniform_breaks(4), {1e-6, 24, {}}, true);
   EXPECT_THROW(offset_closed_spline(spline, 12), GeometryError);
 }
 
@@ -188,7 +188,7 @@ TEST(ArcSpline, ExactArcOffsetAgreesWithCgalApproximatedInsetOfThePolygon) {
   // with it (25 mm > rho_min = 18 mm), where both must trim the same swallowtails.
   std::vector<std::pair<double, double>> polygon;
   for (int i = 0; i < 720; ++i) polygon.push_back({50 * std::cos(2 * pi * i / 720), 30 * std::sin(2 * pi * i / 720)});
-  const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(36), {1e-5, 24}, true);
+  const auto spline = fit_biarcs([](double t) { return ellipse(t, 50, 30); }, uniform_breaks(36), {1e-5, 24, {}}, true);
   for (double d : {10.0, 25.0}) {
     const auto reference = polygon_inset(polygon, d, 1e-6);
     const OffsetCurve ours = offset_closed_spline(spline, d);

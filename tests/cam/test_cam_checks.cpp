@@ -116,3 +116,63 @@ TEST(CamChecks, FlatFaceWidthAndConvexity) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace gearkit::cam;
+using gearkit::cam::testing::rad;
+using gearkit::cam::testing::translating;
+
+TEST(CamChecks, FlatFaceSmallestBaseRadiusIsTheSupremumNotASample) {
+  // Issue 18: sampled at 0.25 deg the bound came out 4e-4 mm short, so a base "at the limit" was
+  // still cusped. The bound sup(-(s + s'')) (Norton, Design of Machinery, eq. 8.31: rho = Rb + s
+  // + s'' > 0) must be at least every densely sampled value and a base just above it convex.
+  for (Law law : {Law::polynomial_345, Law::cycloidal, Law::modified_sine}) {
+    SCOPED_TRACE(std::string(name_of(law)));
+    const MotionProgram program({gearkit::cam::testing::move(SegmentKind::rise, 0, 50, law, 15), gearkit::cam::testing::dwell(50, 180),
+                                 gearkit::cam::testing::move(SegmentKind::fall, 180, 230, law, 15), gearkit::cam::testing::dwell(230, 360)});
+    const CamDesign d{program, translating(Contact::flat_face), 30, Rotation::ccw};
+    const double bound = smallest_base_radius(d, rad(30), 720);
+    double sampled = 0;
+    for (int i = 0; i < 2000000; ++i) {
+      const Motion m = program.at(2 * M_PI * i / 2000000);
+      sampled = std::max(sampled, -(m.s + m.d2s));
+    }
+    EXPECT_GE(bound, sampled - 1e-12);
+    EXPECT_LT(bound - sampled, 1e-7);
+    CamDesign above = d, below = d;
+    above.base_radius = bound * (1 + 1e-9);
+    below.base_radius = bound * (1 - 1e-6);
+    EXPECT_FALSE(check_design(above, {3600, rad(30)}).undercut);
+    EXPECT_GT(check_design(above, {3600, rad(30)}).rho_profile_min.value, 0);
+    // Just below, the radius of curvature is negative at the critical angle (found, not sampled).
+    EXPECT_LT(check_design(below, {3600, rad(30)}).rho_profile_min.value, 0);
+  }
+}
+
+TEST(CamChecks, TranslatingRollerSmallestBaseRadiusIsTheSupremum) {
+  // tan(phi) = (s' - e) / (s0 + s) (Norton, eq. 8.29b): with the base radius found, the largest
+  // pressure angle found equals the limit to 1e-9 and no dense sample exceeds it.
+  const MotionProgram program({gearkit::cam::testing::move(SegmentKind::rise, 0, 70, Law::modified_trapezoid, 25),
+                               gearkit::cam::testing::dwell(70, 180), gearkit::cam::testing::move(SegmentKind::fall, 180, 300, Law::cycloidal, 25),
+                               gearkit::cam::testing::dwell(300, 360)});
+  CamDesign d{program, translating(Contact::roller, 8, 6), 40, Rotation::cw};
+  d.base_radius = smallest_base_radius(d, rad(28), 720);
+  validate(d);
+  const CamChecks c = check_design(d, {3600, rad(28)});
+  EXPECT_NEAR(std::abs(c.pressure_angle_max.value), rad(28), 1e-9);
+  double sampled = 0;
+  for (int i = 0; i < 400000; ++i) sampled = std::max(sampled, std::abs(contact_at(d, 2 * M_PI * i / 400000).pressure_angle));
+  EXPECT_LE(sampled, rad(28) + 1e-12);
+}
+
+TEST(CamChecks, LargestRadiusOfTheCam) {
+  // A radial roller cam: the profile's farthest point is Rb + lift along the top dwell.
+  const CamDesign d{gearkit::cam::testing::rise_dwell_return(20), translating(Contact::roller, 10), 40, Rotation::ccw};
+  const ValueAt r = largest_radius(d);
+  EXPECT_NEAR(r.value, 40 + 20, 1e-9);
+  EXPECT_GE(r.theta, rad(120) - 1e-9);
+  EXPECT_LE(r.theta, rad(180) + 1e-9);
+}
+
+}  // namespace

@@ -3,10 +3,12 @@
 #include "cam_test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace {
 
@@ -84,9 +86,11 @@ TEST(CamCommand, EveryExampleExportsADxfThatEzdxfAcceptsWithTheComputedProfile) 
       ASSERT_EQ(r.status, 0) << r.errors;
       const auto report = nlohmann::json::parse(r.output);
       // Where the profile is arcs, ezdxf must read back every analytic profile point (CSV, 360
-      // per turn) within the fit tolerance; a cusped flat-face envelope is a polyline through
-      // 3600 points, whose chords leave the in-between CSV points by up to their sag.
-      const double tol = report["fit_tolerance_mm"].get<double>() * 1.01 + 1e-6;
+      // per turn) within the fit tolerance, which is a bound (issue 18), not an estimate; a cusped
+      // flat-face envelope is a polyline through 3600 points, whose chords leave the in-between
+      // CSV points by up to their sag.
+      const double tol = report["fit_tolerance_mm"].get<double>() + 1e-12;
+      EXPECT_LE(report["profile_deviation_mm"].get<double>(), report["fit_tolerance_mm"].get<double>());
       const auto check = ezdxf_check(dxf, "--points " + quoted(csv) +
                                               " --x-column profile_x_mm --y-column profile_y_mm --layer profile"
                                               " --tol " + std::to_string(report["profile_arcs"].get<int>() >= 3600 ? 0.05 : tol));
@@ -232,6 +236,134 @@ TEST(CamCommand, StrictTurnsWarningsIntoExitThree) {
   const auto r = run(gearkit() + gearkit::cam::testing::quoted(example("otm2015_p2_oscillating_cycloidal.yaml")) +
                      " --strict");
   EXPECT_EQ(r.status, 3) << r.errors;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CamCommand, DxfReadBackMeetsTheToleranceAtTwentyThousandAngles) {
+  // Issue 18: read back from the DXF, the translating flat-face cam (base 30) missed 1e-3 mm at
+  // 1.026e-3 and the roller cam at 4e-5 mm gave 4.17e-5. ezdxf reads the file; every analytic
+  // profile point (the CSV at 20000 cam angles) must lie within the stated tolerance.
+  struct Case {
+    std::string name, model;
+    double tol;
+  };
+  const std::vector<Case> cases{
+      {"flat30", R"(cam: {base_radius: 30 mm, rotation: cw}
+follower: {type: translating, contact: flat_face}
+motion:
+  - {type: rise, from: 0 deg, to: 90 deg, law: 3-4-5, lift: 15 mm}
+  - {type: dwell, from: 90 deg, to: 180 deg}
+  - {type: return, from: 180 deg, to: 270 deg, law: 3-4-5}
+  - {type: dwell, from: 270 deg, to: 360 deg}
+output: {tolerance: 0.001 mm, samples: 20000}
+)", 1e-3},
+      {"roller4e-5", R"(cam: {base_radius: 40 mm}
+follower: {type: translating, contact: roller, roller_radius: 10 mm}
+motion:
+  - {type: rise, from: 0 deg, to: 120 deg, law: cycloidal, lift: 20 mm}
+  - {type: dwell, from: 120 deg, to: 180 deg}
+  - {type: return, from: 180 deg, to: 300 deg, law: cycloidal}
+  - {type: dwell, from: 300 deg, to: 360 deg}
+output: {tolerance: 4e-5 mm, samples: 20000}
+)", 4e-5}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const fs::path model = write_model(c.name + ".yaml", c.model);
+    const fs::path dxf = scratch_dir() / (c.name + ".dxf"), csv = scratch_dir() / (c.name + ".csv");
+    const auto r = run(gearkit() + quoted(model) + " --dxf " + quoted(dxf) + " --csv " + quoted(csv));
+    ASSERT_EQ(r.status, 0) << r.errors;
+    const auto check = ezdxf_check(dxf, "--points " + quoted(csv) +
+                                            " --x-column profile_x_mm --y-column profile_y_mm --layer profile --tol " +
+                                            fmt::format("{:.17g}", c.tol));
+    ASSERT_FALSE(check.contains("read_error")) << check.dump();
+    EXPECT_LE(check["max_deviation_mm"].get<double>(), c.tol) << check.dump();
+  }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CamCommand, BadValuesOfIssue18AreRefusedWithUnits) {
+  const std::string motion = R"(motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 10 mm}
+  - {type: return, from: 180 deg, to: 360 deg}
+)";
+  const auto speed = write_model("speed.yaml", "cam: {base_radius: 40 mm, speed: -60 rpm}\n"
+                                               "follower: {type: translating, contact: roller, roller_radius: 10 mm}\n" + motion);
+  expect_input_error(quoted(speed), "speed.yaml:1:34: expected a cam speed > 0 rpm (the sense of rotation is cam.rotation), found -60 rpm");
+  const auto limit = write_model("limit.yaml", "cam: {base_radius: 40 mm, pressure_angle_limit: 95 deg}\n"
+                                               "follower: {type: translating, contact: roller, roller_radius: 10 mm}\n" + motion);
+  expect_input_error(quoted(limit), "expected a pressure angle limit between 0 and 90 deg, found 95 deg");
+  const auto huge = write_model("huge.yaml", "cam: {base_radius: 1e300 mm}\n"
+                                             "follower: {type: translating, contact: roller, roller_radius: 10 mm}\n" + motion);
+  expect_input_error(quoted(huge), "huge.yaml:1:20: expected a length of at most 10000 mm, found 1e+300 mm");
+  const auto tol = write_model("tol.yaml", kHead + motion + "output: {tolerance: 1e-7 mm}\n");
+  expect_input_error(quoted(tol), "expected a fit tolerance from 1e-6 mm to 1 mm, found 1e-07 mm");
+  const auto below = write_model("below.yaml", kHead + R"(motion:
+  - {type: rise, from: 0 deg, to: 180 deg, lift: 5 mm}
+  - {type: return, from: 180 deg, to: 360 deg, lift: 10 mm}
+)");
+  expect_input_error(quoted(below), "the return goes 5 mm below the base circle");
+  const auto dip = write_model("dip.yaml", kHead + R"(motion:
+  - type: table
+    from: 0 deg
+    to: 120 deg
+    interpolation: cubic
+    points: [[0 deg, 0 mm], [20 deg, 0 mm], [40 deg, 0 mm], [50 deg, 20 mm], [120 deg, 20 mm]]
+  - {type: return, from: 120 deg, to: 360 deg}
+)");
+  expect_input_error(quoted(dip), "the cubic spline through the table dips to s = -4.6");
+}
+
+TEST(CamCommand, JsonNumbersCarryNoConversionNoise) {
+  const auto j = run_json(quoted(example("translating_flat_345.yaml")));
+  // 30 deg read in radians and written back in degrees stays 30.
+  EXPECT_EQ(j["pressure_angle_limit_deg"].dump(), "30.0");
+  EXPECT_EQ(j["base_radius_mm"].dump(), "30.0");
+}
+
+TEST(CamCommand, PivotInsideTheCamsSweepIsAWarning) {
+  // Issue 18: the OTM example's cam reaches 134.3 mm and sweeps through its own pivot at 120 mm.
+  const auto j = run_json(quoted(example("otm2015_p2_oscillating_cycloidal.yaml")));
+  EXPECT_NEAR(j["radius_max_mm"].get<double>(), 134.3, 0.05);
+  EXPECT_LT(j["pivot_clearance_mm"].get<double>(), 0);
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().find("strike the pivot") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+TEST(CamCommand, PolynomialAndBsplineSegmentsFromTheModelFile) {
+  // The 3-4-5 rise written as a polynomial from its boundary conditions: the same peaks as the
+  // named law (a_max = 5.7735 L / beta^2, Norton table 8-3), and a B-spline table is smooth.
+  const auto poly = write_model("poly.yaml", kHead + R"(motion:
+  - {type: polynomial, from: 0 deg, to: 90 deg, start: {s: 0 mm, v: 0, a: 0}, end: {s: 15 mm, v: 0, a: 0}}
+  - {type: dwell, from: 90 deg, to: 180 deg}
+  - type: table
+    from: 180 deg
+    to: 300 deg
+    interpolation: bspline
+    points: [[180 deg, 15 mm], [220 deg, 12 mm], [260 deg, 3 mm], [300 deg, 0 mm]]
+  - {type: dwell, from: 300 deg, to: 360 deg}
+)");
+  const fs::path csv = scratch_dir() / "poly.csv";
+  const auto j = run_json(quoted(poly) + " --csv " + quoted(csv));
+  for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("jumps"), std::string::npos) << w;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  double a_max = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(std::stod(cell));
+    if (cells[0] <= 90) a_max = std::max(a_max, cells[3]);  // d2s_dtheta2_mm
+  }
+  const double beta = std::numbers::pi / 2;
+  EXPECT_NEAR(a_max, 5.773502691896 * 15 / (beta * beta), 2e-3);  // sampled at 1 deg: the peak within 2e-3
 }
 
 }  // namespace

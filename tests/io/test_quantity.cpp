@@ -56,6 +56,14 @@ TEST(Quantity, DerivedAndOtherUnits) {
   EXPECT_DOUBLE_EQ(parse_quantity_si("500 g", Quantity::mass, ""), 0.5);
   EXPECT_DOUBLE_EQ(parse_quantity_si("1 kg*mm^2", Quantity::moment_of_inertia, ""), 1e-6);
   EXPECT_DOUBLE_EQ(parse_quantity_si("2 min", Quantity::time, ""), 120);
+  // Cam follower trains: damping, torsion springs and rotational damping.
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2.74 N*s/m", Quantity::damping, ""), 2.74);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("3 N*s/mm", Quantity::damping, ""), 3000);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("50 N*m/rad", Quantity::torsional_stiffness, ""), 50);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1 N*m/deg", Quantity::torsional_stiffness, ""), 180 / pi);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("0.5 N*m*s/rad", Quantity::torsional_damping, ""), 0.5);
+  EXPECT_THROW(parse_quantity_si("50 N/m", Quantity::torsional_stiffness, ""), QuantityError);
+  EXPECT_THROW(parse_quantity_si("2 N*s", Quantity::damping, ""), QuantityError);
 }
 
 TEST(Quantity, TypedBoostUnitsFrontEnds) {

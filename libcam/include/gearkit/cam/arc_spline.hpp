@@ -13,6 +13,8 @@
 // and share their tangent (G1), which CGAL's exact arrangement needs to avoid slivers. Lengths in
 // the unit of the caller (mm in gearkit), angles in radians.
 #include <functional>
+#include <optional>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
@@ -47,6 +49,9 @@ struct Knot {
 struct BiarcSpline {
   std::vector<Knot> knots;
   std::vector<Direction> joints;
+  /// Largest distance from the curve (offset by FitOptions::offsets[i]) to the arcs (offset
+  /// alike), found by maximisation over every biarc [length]; one value per offset.
+  std::vector<double> max_error;
 };
 
 /// A straight segment (radius == 0) or a circular arc from (x0, y0) to (x1, y1) about (cx, cy);
@@ -69,16 +74,40 @@ struct CurvePoint {
 struct FitOptions {
   double tolerance = 1e-4;  ///< largest distance from the curve to the arcs [length]
   int max_depth = 24;       ///< interval halvings before giving up on an interval
+  /// Distances to the left of the curve at which the tolerance must hold as well: the offsets
+  /// that will be made of the spline (a roller cam's profile at +R_r, a tool path at R_r - R_c).
+  /// Distance 0 (the curve itself) is always checked and comes first in BiarcSpline::max_error.
+  /// Where an arc is smaller than the offset (it would turn inside out, the offset folds and
+  /// is trimmed) that arc is not checked at that offset.
+  std::vector<double> offsets;
+};
+
+/// The fit cannot meet the tolerance near curve parameter `parameter` (a cusp or a corner).
+class FitError : public GeometryError {
+ public:
+  FitError(const std::string& message, double parameter) : GeometryError(message), parameter_(parameter) {}
+  double parameter() const { return parameter_; }
+
+ private:
+  double parameter_;
 };
 
 /// Fits biarcs to curve(t) on [breaks.front(), breaks.back()], interpolating the curve's points and
-/// tangents at the breaks and at as many more parameters as the tolerance needs (interval halving,
-/// error measured at 5 interior points per biarc). With `closed`, the last knot is made identical
+/// tangents at the breaks and at as many more parameters as the tolerance needs (interval halving).
+/// A biarc is accepted when the largest distance from the curve to it -- found by maximising the
+/// distance over the biarc's interval (sampling to bracket each local maximum, then golden-section
+/// search), at every requested offset -- is within the tolerance; the tolerance is thus a bound
+/// on the exported arcs, not a sampled estimate. With `closed`, the last knot is made identical
 /// to the first. Breaks should include the places where the curvature jumps.
-/// @throws GeometryError if an interval cannot meet the tolerance within max_depth halvings
-///         (a cusp or a corner in the curve).
+/// @throws FitError if an interval cannot meet the tolerance within max_depth halvings
+///         (a cusp or a corner in the curve); GeometryError if the range is empty.
 BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vector<double> breaks,
                        const FitOptions& options, bool closed);
+
+/// The piece offset by `distance` to its left (arcs: concentric, radius reduced by the distance
+/// for a counter-clockwise arc); std::nullopt if an arc would turn inside out (|distance| beyond
+/// its radius on its centre's side).
+std::optional<Piece> offset_piece(const Piece& piece, double distance);
 
 /// The arcs of a biarc spline (two per biarc, evaluated in double precision).
 std::vector<Piece> pieces_of(const BiarcSpline& spline);

@@ -28,10 +28,17 @@ struct CamProfile {
   bool tool_path_trimmed = false;  ///< the cutter offset folded: the cutter is too large for a hollow
   bool profile_is_polyline = false;  ///< flat face with cusps: the envelope as straight segments
   std::size_t biarcs = 0;          ///< biarcs in the fitted curve
+  /// Largest distances of the exported arcs from the analytic curves [mm], found by maximisation
+  /// during the fit (each within ProfileOptions::tolerance): pitch curve (flat faces: the
+  /// profile), profile, tool path (0 without a cutter). Where an offset folds and is trimmed
+  /// (undercut, a cutter too large for a hollow) the trimmed-away arcs are not counted.
+  double pitch_error = 0, profile_error = 0, tool_path_error = 0;
 };
 
 /// Builds the pitch curve, profile and tool path. Requires validate(design) to have passed.
-/// @throws GeometryError if CGAL fails or the profile vanishes (roller larger than the cam).
+/// @throws GeometryError if CGAL fails, the profile vanishes (roller larger than the cam), or
+///         the arcs cannot meet the tolerance (a corner in the motion; the message gives the cam
+///         angle).
 CamProfile synthesize_profile(const CamDesign& design, const ProfileOptions& options);
 
 /// Largest distance from any point to the nearest piece of `loops` (points in order along the

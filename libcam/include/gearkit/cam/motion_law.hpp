@@ -37,4 +37,10 @@ std::optional<Law> law_from_name(std::string_view name);
 /// Every law name, for messages ("expected one of ...").
 std::vector<std::string> law_names();
 
+/// The values of u inside (0, 1) where the law is pieced together, so that a derivative may
+/// jump there: parabolic {1/2} (acceleration), modified trapezoid {1/8, 3/8, 5/8, 7/8} and
+/// modified sine {1/8, 7/8} (continuous up to the jerk, checked all the same); none for the
+/// others.
+std::vector<double> law_breaks(Law law);
+
 }  // namespace gearkit::cam

@@ -33,6 +33,9 @@ enum class Quantity {
   moment_of_inertia,
   stiffness,        ///< linear spring rate, N/m
   pressure,
+  damping,              ///< viscous damping, N*s/m
+  torsional_stiffness,  ///< torsion spring rate, N*m/rad
+  torsional_damping,    ///< rotational viscous damping, N*m*s/rad
 };
 
 /// Human name of a quantity ("a length", "an angular velocity") for messages.
