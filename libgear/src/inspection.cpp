@@ -14,7 +14,12 @@
 namespace gearkit::gear {
 
 const char* to_string(AllowanceSource source) {
-  return source == AllowanceSource::given ? "given" : "ISO/TR 10064-2";
+  switch (source) {
+    case AllowanceSource::given: return "given";
+    case AllowanceSource::din3967: return "DIN 3967";
+    case AllowanceSource::iso_tr_10064_2: break;
+  }
+  return "ISO/TR 10064-2";
 }
 
 int default_centre_distance_it(int grade) {
@@ -139,13 +144,27 @@ void iso_tr_allowances(const GearResult& g, int i, const InspectionInput& ii, do
   gi.allowances.A_sni = A_sne - 1e-3 * tooth_thickness_tolerance(gi.tolerances->F_rT, gi.b_r, g.alpha_n);
 }
 
+ThicknessAllowances din3967_allowances_of(const Din3967Designation& designation, const GearResult& g, int i) {
+  try {
+    return din3967_allowances(designation, g.d);
+  } catch (const std::exception& e) {  // an unknown series or a diameter beyond the tables
+    throw GeometryError(field("din3967_", i), e.what());
+  }
+}
+
 void thickness_allowances(const std::vector<BacklashInput>& states, const GearPairResult& t,
                           const InspectionInput& ii, InspectionResult& r) {
   double given_upper = 0.0;
   int computed = 0;
   for (int i = 0; i < 2; ++i) {
     GearInspection& gi = r.gear[i];
-    if (ii.allowances[i]) {
+    if (ii.din3967[i] && !ii.allowances[i]) {
+      gi.allowances = din3967_allowances_of(*ii.din3967[i], t.gear[i], i);
+      gi.source = AllowanceSource::din3967;
+      gi.din3967 = fmt::format("{}{}", ii.din3967[i]->tolerance_series, ii.din3967[i]->deviation_series);
+      gi.b_r = kNaN;
+      given_upper += gi.allowances.A_sne;
+    } else if (ii.allowances[i]) {
       gi.allowances = *ii.allowances[i];
       if (!(gi.allowances.A_sne >= gi.allowances.A_sni)) {
         throw GeometryError(field("allowances", i), fmt::format("expected upper >= lower, found {} < {} mm",
@@ -163,7 +182,7 @@ void thickness_allowances(const std::vector<BacklashInput>& states, const GearPa
   if (computed == 0) return;
   const double each = (required_upper_sum(states, r.pair, alpha_n, r.pair.j_bn_min_target) - given_upper) / computed;
   for (int i = 0; i < 2; ++i) {
-    if (!ii.allowances[i]) iso_tr_allowances(t.gear[i], i, ii, each, r.gear[i]);
+    if (!ii.allowances[i] && !ii.din3967[i]) iso_tr_allowances(t.gear[i], i, ii, each, r.gear[i]);
   }
 }
 
@@ -276,7 +295,7 @@ void inspection_checks(const GearPairInput& in, const GearPairResult& t, Inspect
 InspectionResult compute_inspection(const GearPairInput& in, const GearPairResult& t, const InspectionInput& ii) {
   InspectionResult r;
   for (int i = 0; i < 2; ++i) {
-    if (!ii.grade[i] && !ii.allowances[i]) {
+    if (!ii.grade[i] && !ii.allowances[i] && !ii.din3967[i]) {
       throw GeometryError(field("grade", i), fmt::format("gear {} needs an accuracy grade or its thickness allowances", i + 1));
     }
     r.gear[i].tolerances = gear_tolerances(in, t.gear[i], i, ii);

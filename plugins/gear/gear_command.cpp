@@ -26,7 +26,7 @@ constexpr std::string_view kUsage =
     "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional]] [--internal] [--transverse] "
     "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
     "[--pin-diameter LEN] [--quality Q[,Q2] [--iso1328-edition 2013|1995]] "
-    "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW] [--min-backlash LEN] "
+    "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW | --din3967 27cd[,26cd]] [--min-backlash LEN] "
     "[--centre-distance-tolerance jsN | --centre-distance-allowances UP,LOW] [--temperature T[,T_HOUSING] "
     "[--expansion A1,A2,AH]] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] [--draw pair|gear1|gear2]";
 

@@ -103,6 +103,23 @@ void expansion_coefficients(const io::po::variables_map& vm, gg::InspectionInput
   }
 }
 
+void din3967_designations(const io::po::variables_map& vm, gg::InspectionInput& ii) {
+  if (!has(vm, "din3967")) return;
+  for (const char* other : {"thickness-allowances1", "thickness-allowances2"}) {
+    if (has(vm, other)) reject("din3967", fmt::format("cannot be combined with --{}: give one of them", other));
+  }
+  const auto parts = items(vm, "din3967");
+  if (parts.size() > 2) reject("din3967", "expected DESIGNATION or DESIGNATION1,DESIGNATION2, e.g. 27cd or 25e,26d");
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    try {
+      ii.din3967[i] = gg::parse_din3967(parts[i]);
+    } catch (const std::invalid_argument& e) {
+      reject("din3967", e.what());
+    }
+  }
+  if (parts.size() == 1) ii.din3967[1] = ii.din3967[0];
+}
+
 void centre_distance_options(const io::po::variables_map& vm, gg::InspectionInput& ii) {
   if (has(vm, "centre-distance-tolerance") && has(vm, "centre-distance-allowances")) {
     reject("centre-distance-allowances", "cannot be combined with --centre-distance-tolerance: give one of them");
@@ -130,6 +147,9 @@ void add_tolerance_options(io::po::options_description& desc) {
        "normal tooth thickness allowances A_sne,A_sni of gear 1, mm (default: ISO/TR 10064-2 from --quality)")
       ("thickness-allowances2", po::value<std::string>()->value_name("UPPER,LOWER"),
        "normal tooth thickness allowances A_sne,A_sni of gear 2, mm")
+      ("din3967", po::value<std::string>()->value_name("TS[,TS2]"),
+       "DIN 3967 tooth thickness allowances of both gears or of gear 1 and gear 2, e.g. 27cd (tolerance series "
+       "21..30, deviation series a..h)")
       ("min-backlash", po::value<std::string>()->value_name("LEN"),
        "minimum normal backlash the allowances must leave, mm (default ISO/TR 10064-2)")
       ("centre-distance-tolerance", po::value<std::string>()->value_name("jsN"),
@@ -174,10 +194,11 @@ std::optional<gg::InspectionInput> read_tolerance_options(const io::po::variable
   ii.grade = read_quality(vm);
   if (has(vm, "thickness-allowances1")) ii.allowances[0] = limits(vm, "thickness-allowances1");
   if (has(vm, "thickness-allowances2")) ii.allowances[1] = limits(vm, "thickness-allowances2");
-  const bool wanted = ii.grade[0] || ii.allowances[0] || ii.allowances[1];
+  din3967_designations(vm, ii);
+  const bool wanted = ii.grade[0] || ii.allowances[0] || ii.allowances[1] || ii.din3967[0];
   for (const char* key : {"iso1328-edition", "min-backlash", "centre-distance-tolerance", "centre-distance-allowances",
                           "temperature", "expansion"}) {
-    if (has(vm, key) && !wanted) reject(key, "needs --quality or --thickness-allowances1/2");
+    if (has(vm, key) && !wanted) reject(key, "needs --quality, --din3967 or --thickness-allowances1/2");
   }
   if (!wanted) return std::nullopt;
   if (has(vm, "min-backlash")) {
@@ -196,7 +217,7 @@ std::string tolerance_option_for_field(const std::string& field) {
   static const std::map<std::string, std::string> options = {
       {"grade1", "quality"}, {"grade2", "quality"}, {"allowances1", "thickness-allowances1"},
       {"allowances2", "thickness-allowances2"}, {"centre_distance_allowances", "centre-distance-allowances"},
-      {"centre_distance_it", "centre-distance-tolerance"}};
+      {"centre_distance_it", "centre-distance-tolerance"}, {"din3967_1", "din3967"}, {"din3967_2", "din3967"}};
   const auto it = options.find(field);
   return it == options.end() ? "" : it->second;
 }

@@ -11,7 +11,7 @@
 
 namespace gearkit::plugins::gear {
 
-/// Adds --quality, --iso1328-edition, --thickness-allowances1/2, --min-backlash,
+/// Adds --quality, --iso1328-edition, --thickness-allowances1/2, --din3967, --min-backlash,
 /// --centre-distance-tolerance, --centre-distance-allowances, --temperature, --expansion.
 void add_tolerance_options(io::po::options_description& desc);
 
@@ -23,7 +23,7 @@ std::array<std::optional<int>, 2> read_quality(const io::po::variables_map& vm);
 /// The edition of --iso1328-edition (default 2013). @throws io::InputError naming the option.
 gearkit::gear::Iso1328Edition read_iso1328_edition(const io::po::variables_map& vm);
 
-/// The inspection asked for: set when --quality or --thickness-allowances1/2 is given.
+/// The inspection asked for: set when --quality, --din3967 or --thickness-allowances1/2 is given.
 /// @throws io::InputError naming the option for malformed values, allowances with upper < lower,
 /// options that need --quality or allowances, and contradictory combinations.
 std::optional<gearkit::gear::InspectionInput> read_tolerance_options(const io::po::variables_map& vm);

@@ -53,7 +53,9 @@ io::Table tolerance_table(const gg::InspectionResult& r) {
 io::Table thickness_table(const gg::InspectionResult& r) {
   io::Table t{"Tooth thickness and inspection", {"quantity", "gear 1", "gear 2"}, {}};
   using G = const gg::GearInspection&;
-  t.add_row(both("thickness allowances from", r, [](G g) { return std::string(gg::to_string(g.source)); }));
+  t.add_row(both("thickness allowances from", r, [](G g) {
+    return g.din3967.empty() ? std::string(gg::to_string(g.source)) : fmt::format("DIN 3967 {}", g.din3967);
+  }));
   t.add_row(both("upper allowance A_sne [mm]", r, [](G g) { return mm(g.allowances.A_sne); }));
   t.add_row(both("lower allowance A_sni [mm]", r, [](G g) { return mm(g.allowances.A_sni); }));
   t.add_row(both("thickness tolerance T_sn [mm]", r, [](G g) { return mm(g.T_sn); }));
@@ -112,6 +114,7 @@ nlohmann::json tolerances_json(const gg::FlankTolerances& t) {
 void gear_json(nlohmann::json& j, const gg::GearInspection& g) {
   j["tolerances"] = g.tolerances ? tolerances_json(*g.tolerances) : nlohmann::json(nullptr);
   j["thickness_allowances_from"] = gg::to_string(g.source);
+  j["din3967"] = g.din3967.empty() ? nlohmann::json(nullptr) : nlohmann::json(g.din3967);
   j["A_sne_mm"] = g.allowances.A_sne;
   j["A_sni_mm"] = g.allowances.A_sni;
   j["T_sn_mm"] = g.T_sn;

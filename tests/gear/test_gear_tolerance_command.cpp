@@ -86,6 +86,9 @@ TEST(GearToleranceCommand, BadInputExitsWithStatus2AndNamesTheOption) {
       {"--min-backlash 0.1", "--min-backlash"},
       {"--quality 7 --temperature 900", "--temperature"},
       {"--quality 7 --expansion 1e-5,1e-5,2e-5", "--expansion"},
+      {"--din3967 27x", "--din3967"},   // a deviation series that does not exist
+      {"--din3967 31cd", "--din3967"},  // nor a tolerance series
+      {"--din3967 27cd --thickness-allowances1 -0.05,-0.1", "--din3967"},
   };
   for (const auto& [args, option] : cases) {
     const auto r = run_gearkit(std::string(kPair) + args);
@@ -95,6 +98,17 @@ TEST(GearToleranceCommand, BadInputExitsWithStatus2AndNamesTheOption) {
     EXPECT_NE(r.err.find(option), std::string::npos) << args << ": " << r.err;
     EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << args << ": " << r.err;
   }
+}
+
+// DIN 3967 clause 3.1 example: 27cd at d = 100 mm (z = 50, m = 2) -> A_sne = -70 um, A_sni = -170 um.
+TEST(GearToleranceCommand, Din3967Designation) {
+  const auto r = run_gearkit("gear --z1 20 --z2 50 --module 2 --din3967 25e,27cd --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["gears"][1]["din3967"], "27cd");
+  EXPECT_NEAR(j["gears"][1]["A_sne_mm"].get<double>(), -0.070, 1e-12);
+  EXPECT_NEAR(j["gears"][1]["A_sni_mm"].get<double>(), -0.170, 1e-12);
+  EXPECT_EQ(j["gears"][0]["thickness_allowances_from"], "DIN 3967");
 }
 
 TEST(GearToleranceCommand, NoBacklashIsAWarning) {

@@ -126,6 +126,33 @@ TEST(Inspection, GivenAllowancesAndCentreDistance) {
   EXPECT_TRUE(std::isnan(r.pair.j_bn_min_target));
 }
 
+// DIN 3967 designation 25cd on z = 20/41, m = 2 (d = 40 / 82 mm): Table 1 cd = -54 / -70 um,
+// Table 2 series 25 = 30 / 40 um; without a grade no runout term, so the span limits are exactly
+// the allowances times cos(alpha_n) (DIN 3967 Appendix B, A_We = A_sne cos alpha_n).
+TEST(Inspection, Din3967Designations) {
+  gg::GearPairInput in;
+  in.z1 = 20;
+  in.z2 = 41;
+  in.module = 2.0;
+  const auto table = gg::compute_gear_pair(in);
+  gg::InspectionInput ii;
+  ii.din3967 = {gg::parse_din3967("25cd"), gg::parse_din3967("25cd")};
+  const auto r = gg::compute_inspection(in, table, ii);
+  EXPECT_EQ(r.gear[0].source, gg::AllowanceSource::din3967);
+  EXPECT_EQ(r.gear[1].din3967, "25cd");
+  EXPECT_NEAR(r.gear[0].allowances.A_sne, -0.054, 1e-12);
+  EXPECT_NEAR(r.gear[0].allowances.A_sni, -0.084, 1e-12);
+  EXPECT_NEAR(r.gear[1].allowances.A_sni, -0.110, 1e-12);
+  EXPECT_NEAR(r.gear[1].W_k_max, table.gear[1].W_k - 0.070 * kCos20, 1e-12);
+  EXPECT_EQ(r.pair.centre_distance_field, "none");  // no grade, no field given: the nominal distance
+  EXPECT_NEAR(r.pair.range.min.j_n, 0.124 * kCos20, 1e-12);
+  // With a grade too, DIN 3967's runout term narrows the span limits (F_rT of class 8).
+  ii.grade = {8, 8};
+  const auto q = gg::compute_inspection(in, table, ii);
+  EXPECT_EQ(q.gear[0].source, gg::AllowanceSource::din3967);
+  EXPECT_NEAR(q.gear[0].W_k_max, table.gear[0].W_k + (-0.054 - 0.72e-3 * q.gear[0].F_r * kTan20) * kCos20, 1e-12);
+}
+
 TEST(Inspection, NegativeMinimumBacklashIsAWarning) {
   const auto in = spur_20_40();
   gg::InspectionInput ii;

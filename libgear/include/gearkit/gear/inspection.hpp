@@ -9,6 +9,7 @@
 
 #include <gearkit/gear/accuracy.hpp>
 #include <gearkit/gear/backlash.hpp>
+#include <gearkit/gear/din3967.hpp>
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/thickness_tolerance.hpp>
 
@@ -26,7 +27,8 @@ inline constexpr double kSteelExpansion = 11.5e-6;
 struct InspectionInput {
   std::array<std::optional<int>, 2> grade;  ///< accuracy grade of each gear (ISO 1328-1 class or grade)
   Iso1328Edition edition = Iso1328Edition::iso2013;
-  std::array<std::optional<ThicknessAllowances>, 2> allowances;  ///< given directly; else ISO/TR 10064-2
+  std::array<std::optional<ThicknessAllowances>, 2> allowances;  ///< given directly
+  std::array<std::optional<Din3967Designation>, 2> din3967;      ///< else from DIN 3967 ("27cd"); else ISO/TR 10064-2
   std::optional<double> j_bn_min;  ///< minimum normal backlash the allowances must give, mm (default ISO/TR 10064-2)
   std::optional<ThicknessAllowances> centre_distance_allowances;  ///< A_ae, A_ai of |a|, mm (given)
   std::optional<int> centre_distance_it;  ///< IT grade of the js field (default from the accuracy grade)
@@ -34,14 +36,15 @@ struct InspectionInput {
   double alpha_gear1 = kSteelExpansion, alpha_gear2 = kSteelExpansion, alpha_housing = kSteelExpansion;  ///< 1/K
 };
 
-enum class AllowanceSource { given, iso_tr_10064_2 };
-const char* to_string(AllowanceSource source);  ///< "given", "ISO/TR 10064-2"
+enum class AllowanceSource { given, din3967, iso_tr_10064_2 };
+const char* to_string(AllowanceSource source);  ///< "given", "DIN 3967", "ISO/TR 10064-2"
 
 /// Inspection data of one gear. NaN where a value does not exist (no span for a ring, no pin range
 /// for a ring, no b_r for given allowances).
 struct GearInspection {
   std::optional<FlankTolerances> tolerances;  ///< when the gear has a grade
   AllowanceSource source = AllowanceSource::given;
+  std::string din3967;              ///< the DIN 3967 designation ("27cd") when the source is DIN 3967
   ThicknessAllowances allowances;   ///< A_sne, A_sni, mm
   double T_sn = 0;                  ///< A_sne - A_sni, mm
   double b_r = 0;                   ///< radial infeed tolerance, um (ISO/TR 10064-2 system)
