@@ -56,6 +56,7 @@ const std::array kUnits = {
     UnitDef{"deg", kDegree, kAngleD},
     UnitDef{"°", kDegree, kAngleD},
     UnitDef{"rev", 2 * pi, kAngleD},
+    UnitDef{"r", 2 * pi, kAngleD},  // revolution, as in r/min (ISO 80000-3 writes n in r/min too)
     UnitDef{"turn", 2 * pi, kAngleD},
     UnitDef{"s", 1.0, kTimeD},
     UnitDef{"ms", 1e-3, kTimeD},
@@ -136,6 +137,45 @@ struct ParsedUnit {
   double factor = 1.0;
   Dim dim;
 };
+
+// The typographic spellings of printed tables and course notes, mapped to the ASCII grammar:
+// the middle dot and the dot operator are products (N·m), superscript digits and the
+// superscript minus are exponents (min⁻¹, kg·m²).
+std::string ascii_unit(std::string_view text) {
+  struct Spelling {
+    std::string_view utf8, ascii;
+  };
+  static constexpr std::array<Spelling, 14> kSpellings{{
+      {"\u00b7", "*"}, {"\u22c5", "*"}, {"\u207b", "-"}, {"\u2070", "0"}, {"\u00b9", "1"},
+      {"\u00b2", "2"}, {"\u00b3", "3"}, {"\u2074", "4"}, {"\u2075", "5"}, {"\u2076", "6"},
+      {"\u2077", "7"}, {"\u2078", "8"}, {"\u2079", "9"}, {"\u00d7", "*"},
+  }};
+  std::string out;
+  bool in_superscript = false;
+  for (std::size_t i = 0; i < text.size();) {
+    const Spelling* match = nullptr;
+    for (const auto& sp : kSpellings)
+      if (text.substr(i, sp.utf8.size()) == sp.utf8) match = &sp;
+    const bool superscript = match && match->ascii != "*";
+    if (superscript && !in_superscript) out += '^';
+    in_superscript = superscript;
+    if (match) {
+      out += match->ascii;
+      i += match->utf8.size();
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
+}
+
+// ISO 80000-3 (items 3-17 and 3-18): a rotational speed written without an angle, n in min^-1
+// or s^-1, counts revolutions; only rad/s (or deg/s, rpm...) names an angle per time. So where an
+// angular velocity is expected, a unit whose angle exponent is 0 is read as revolutions per that
+// time: 1020 min^-1 = 1020 r/min = 106.8 rad/s, 10 1/s = 10 r/s = 62.8 rad/s.
+double rotational_frequency_factor(const ParsedUnit& u, Quantity expected) {
+  return expected == Quantity::angular_velocity && u.dim.A == 0 ? 2 * pi : 1.0;
+}
 
 // UNIT = FACTOR (('*' | '/') FACTOR)*, FACTOR = SYMBOL ['^' INTEGER] | '1'
 ParsedUnit parse_unit(std::string_view text, std::string_view whole) {
@@ -248,10 +288,11 @@ std::string_view describe(Quantity q) {
 }
 
 double unit_factor_si(std::string_view unit, Quantity expected) {
-  ParsedUnit u = parse_unit(trim(unit), unit);
+  const std::string ascii = ascii_unit(trim(unit));
+  ParsedUnit u = parse_unit(ascii, unit);
   if (!compatible(u.dim, dimension_of(expected)))
     throw QuantityError(fmt::format("expected {}, found unit {}", describe(expected), quoted(trim(unit))));
-  return u.factor;
+  return u.factor * rotational_frequency_factor(u, expected);
 }
 
 double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit) {
@@ -277,10 +318,11 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
   if (rest.empty()) {
     if (!default_unit.empty()) factor = unit_factor_si(default_unit, expected);
   } else {
-    ParsedUnit u = parse_unit(rest, t);
+    const std::string ascii = ascii_unit(rest);
+    ParsedUnit u = parse_unit(ascii, t);
     if (!compatible(u.dim, dimension_of(expected)))
       throw QuantityError(fmt::format("expected {}, found {} (unit '{}')", describe(expected), quoted(t), rest));
-    factor = u.factor;
+    factor = u.factor * rotational_frequency_factor(u, expected);
   }
   double si_value = value * factor;
   if (!std::isfinite(si_value))

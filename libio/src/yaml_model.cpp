@@ -1,5 +1,7 @@
 #include <gearkit/io/yaml_model.hpp>
 
+#include <cctype>
+
 #include <gearkit/io/output.hpp>
 
 #include <fmt/format.h>
@@ -286,6 +288,12 @@ void MapReader::finish() const {
   for (const auto& kv : node_) {
     const std::string& k = kv.first.Scalar();
     if (known_.count(k)) continue;
+    // "{m: 2,5 mm}": YAML splits a flow mapping at the comma, leaving "5 mm" as a key.
+    if (!k.empty() && std::isdigit(static_cast<unsigned char>(k.front())) && kv.second.IsNull())
+      fail_at(mark_of(kv.first, file_),
+              fmt::format("expected a decimal point, found a decimal comma before {} in {} (inside "
+                          "{{...}} a comma separates entries: write 2.5, not 2,5)",
+                          quote(k), what_));
     fail_at(mark_of(kv.first, file_), fmt::format("unknown key '{}' in {}; expected one of: {}", k, what_,
                                                  fmt::join(known_, ", ")));
   }

@@ -86,7 +86,8 @@ TEST(DynCommand, PaperTubeCutter) {
 }
 
 TEST(DynCommand, ConveyorBelt) {
-  // Seed 004_b4a8ce5a956e12a3.txt, conveyor belt, printed a) to d).
+  // Seed 004_b4a8ce5a956e12a3.txt, conveyor belt, printed a) to d). The example writes the motor
+  // speed as the seed does, 1440 min^-1: read as rad/min it gave v = 0.3200 m/s (issue 16).
   const auto j = run_json(example("conveyor_belt.yaml"));
   const auto& e = j["energy"];
   EXPECT_NEAR(e["rim_speed_m_s"].get<double>(), 2.011, 0.0005);

@@ -46,7 +46,7 @@ TEST(Quantity, DerivedAndOtherUnits) {
   EXPECT_DOUBLE_EQ(parse_quantity_si("90 °", Quantity::angle, ""), pi / 2);
   EXPECT_DOUBLE_EQ(parse_quantity_si("0.25 rev", Quantity::angle, ""), pi / 2);
   EXPECT_DOUBLE_EQ(parse_quantity_si("10 rad/s", Quantity::angular_velocity, ""), 10);
-  EXPECT_DOUBLE_EQ(parse_quantity_si("10 1/s", Quantity::angular_velocity, ""), 10);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("10 1/s", Quantity::angular_velocity, ""), 10 * 2 * pi);
   EXPECT_DOUBLE_EQ(parse_quantity_si("2 m/s^2", Quantity::acceleration, ""), 2);
   EXPECT_DOUBLE_EQ(parse_quantity_si("3 kN*m", Quantity::torque, ""), 3000);
   EXPECT_DOUBLE_EQ(parse_quantity_si("1 hp", Quantity::power, ""), 745.69987158227022);
@@ -64,6 +64,35 @@ TEST(Quantity, DerivedAndOtherUnits) {
   EXPECT_DOUBLE_EQ(parse_quantity_si("0.5 N*m*s/rad", Quantity::torsional_damping, ""), 0.5);
   EXPECT_THROW(parse_quantity_si("50 N/m", Quantity::torsional_stiffness, ""), QuantityError);
   EXPECT_THROW(parse_quantity_si("2 N*s", Quantity::damping, ""), QuantityError);
+}
+
+// ISO 80000-3 items 3-17 and 3-18: rotational frequency n counts revolutions per time, written
+// min^-1, r/min or rev/min; only a unit naming an angle (rad/s, deg/s) is an angular velocity.
+// Seed 004 writes n_mot = 1440 min^-1 and reads it as 1440 * 2 pi / 60 = 150.80 rad/s.
+TEST(Quantity, RotationalSpeedWithoutAnAngleCountsRevolutions) {
+  const double n = 1440 * 2 * pi / 60;
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1440 min^-1", Quantity::angular_velocity, "rpm"), n);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1440 1/min", Quantity::angular_velocity, "rpm"), n);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1440 r/min", Quantity::angular_velocity, "rpm"), n);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1440 rev/min", Quantity::angular_velocity, "rpm"), n);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1440 rpm", Quantity::angular_velocity, "rpm"), n);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("24 s^-1", Quantity::angular_velocity, "rpm"), n);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("150 rad/min", Quantity::angular_velocity, "rpm"), 2.5);
+  EXPECT_DOUBLE_EQ(gearkit::io::unit_factor_si("min^-1", Quantity::angular_velocity), 2 * pi / 60);
+  // A frequency or a rate that is not a rotational speed keeps its plain meaning.
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2 1/s^2", Quantity::angular_acceleration, ""), 2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("3 min", Quantity::time, ""), 180);
+}
+
+// The spellings of the seeds' printed text: 1020 min⁻¹, 20 N·m, 0.120 kg·m², a ⋅ as product.
+TEST(Quantity, UnicodeSpellingsOfTheSeeds) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("1020 min⁻¹", Quantity::angular_velocity, "rpm"), 1020 * 2 * pi / 60);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("20 N·m", Quantity::torque, ""), 20);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("465.9 N·mm", Quantity::torque, ""), 0.4659);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("0.120 kg·m²", Quantity::moment_of_inertia, ""), 0.12);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2 kg⋅m²", Quantity::moment_of_inertia, ""), 2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("9.81 m/s²", Quantity::acceleration, ""), 9.81);
+  EXPECT_THROW(parse_quantity_si("1 mm³", Quantity::length, ""), QuantityError);  // a volume
 }
 
 TEST(Quantity, TypedBoostUnitsFrontEnds) {

@@ -62,6 +62,20 @@ TEST(YamlModel, UnknownKeyIsReportedAtItsPosition) {
   EXPECT_NE(msg.find("module"), std::string::npos) << msg;  // the keys it knows are listed
 }
 
+// "{module: 2,5 mm}" is split by YAML at the comma into module: 2 and a key "5 mm"; the message
+// must say decimal comma, not "unknown key".
+TEST(YamlModel, DecimalCommaInAFlowMappingIsNamed) {
+  auto doc = load_yaml_text("gear: {z: 12, module: 2,5 mm}\n", "m.yaml");
+  MapReader top(doc.root, doc.file, "file");
+  MapReader r = top.map("gear");
+  r.integer("z");
+  r.optional_quantity("module", Quantity::length, "mm");
+  std::string msg = error_of([&] { r.finish(); });
+  EXPECT_NE(msg.find("m.yaml:1:25: expected a decimal point, found a decimal comma before '5 mm'"),
+            std::string::npos) << msg;
+  EXPECT_EQ(msg.find("unknown key"), std::string::npos) << msg;
+}
+
 TEST(YamlModel, MismatchedUnitNamesFileLineColumn) {
   auto doc = load_yaml_text("gear:\n  module: 20 deg\n", "m.yaml");
   MapReader top(doc.root, doc.file, "model");
