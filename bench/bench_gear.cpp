@@ -2,6 +2,8 @@
 // and a complete gear-pair table (both gears and the pair, target 1M+ tables/s).
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/involute.hpp>
+#include <gearkit/gear/rating.hpp>
+#include <gearkit/gear/sizing.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -73,6 +75,67 @@ void BM_GearPairTableGivenCentreDistanceBalanced(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
 }
 BENCHMARK(BM_GearPairTableGivenCentreDistanceBalanced);
+
+// ISO/TR 6336-30 example 1 with every factor computed (K_v, K_Hbeta by method C, K_Halpha from
+// the ISO 1328 grade 5 tolerances), both gears, life; target 100 000 ratings/s.
+gg::GearPairInput rated_pair() {
+  gg::GearPairInput in;
+  in.z1 = 17;
+  in.z2 = 103;
+  in.module = 8.0;
+  in.helix_angle = 15.8 * std::numbers::pi / 180.0;
+  in.face_width = 100.0;
+  in.h_fP = 1.4;
+  in.rho_fP = 0.39;
+  in.x1 = 0.145;
+  return in;
+}
+
+gg::RatingInput rated_load() {
+  gg::RatingInput r;
+  r.T_1 = 9000.0;
+  r.n_1 = 360.0;
+  r.material = {gg::material_by_name("18CrNiMo7-6"), gg::material_by_name("18CrNiMo7-6")};
+  r.life_h = 50000.0;
+  r.quality = 5;
+  return r;
+}
+
+void BM_RatingIso6336(benchmark::State& state) {
+  const gg::GearPairInput in = rated_pair();
+  const gg::GearPairResult table = gg::compute_gear_pair(in);
+  gg::RatingInput load = rated_load();
+  int n = 0;
+  for (auto _ : state) {
+    load.T_1 = 9000.0 + (n++ & 15);  // a different load each time
+    benchmark::DoNotOptimize(gg::rate_gear_pair(in, table, load));
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+}
+BENCHMARK(BM_RatingIso6336);
+
+void BM_TableAndRatingIso6336(benchmark::State& state) {
+  gg::GearPairInput in = rated_pair();
+  const gg::RatingInput load = rated_load();
+  int n = 0;
+  for (auto _ : state) {
+    in.z2 = 103 + (n++ & 15);  // a different pair each time: the table and the rating
+    benchmark::DoNotOptimize(gg::rate_gear_pair(in, gg::compute_gear_pair(in), load));
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+}
+BENCHMARK(BM_TableAndRatingIso6336);
+
+void BM_SizingDefaultSearch(benchmark::State& state) {
+  gg::SizingInput s;
+  s.load = rated_load();
+  s.load.T_1 = 500.0;
+  s.load.n_1 = 1450.0;
+  s.load.quality = 6;
+  s.ratio = 3.5;
+  for (auto _ : state) benchmark::DoNotOptimize(gg::size_gear_pair(s));
+}
+BENCHMARK(BM_SizingDefaultSearch)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -84,15 +84,16 @@ namespace {
 
 using detail::Mesh;
 
-void require(bool ok, const char* field, const std::string& message) {
-  if (!ok) throw RatingError(field, message);
+// The message is formatted only on failure: validation runs on every rating.
+template <class Message>
+void require(bool ok, const char* field, Message message) {
+  if (!ok) throw RatingError(field, message());
 }
 
 void require_deviation(double value, const char* field, const char* what) {
-  require(std::isfinite(value) && value >= 0.0, field,
-          fmt::format("the {} needs {} (um, >= 0); give it, or --quality once ISO 1328 grades are available, or impose "
+  require(std::isfinite(value) && value >= 0.0, field, [&] { return fmt::format("the {} needs {} (um, >= 0); give it, the ISO 1328 grade (--quality) or impose "
                       "the factor",
-                      what, field));
+                      what, field); });
 }
 
 // K_v, method B (ISO 6336-1:2019 6.5.9).
@@ -137,7 +138,7 @@ void face_load_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
     r.K_Hbeta = in.factors.get(Factor::K_Hbeta);
   } else {
     if (std::isfinite(in.F_betax)) {
-      require(in.F_betax >= 0.0, "F_betax", fmt::format("expected F_betax >= 0 um, found {}", in.F_betax));
+      require(in.F_betax >= 0.0, "F_betax", [&] { return fmt::format("expected F_betax >= 0 um, found {}", in.F_betax); });
       r.F_betax = in.F_betax;
     } else {
       require_deviation(in.f_ma, "f_ma", "face load factor K_Hbeta (method C)");
@@ -206,18 +207,17 @@ void deviations_of_quality(const Mesh& m, RatingInput& in) {
 }  // namespace
 
 void validate(const RatingInput& in) {
-  require(std::isfinite(in.T_1) && in.T_1 > 0.0, "T_1", fmt::format("expected a torque > 0 N m, found {}", in.T_1));
-  require(std::isfinite(in.n_1) && in.n_1 > 0.0, "n_1", fmt::format("expected a speed > 0 1/min, found {}", in.n_1));
-  require(std::isfinite(in.K_A) && in.K_A >= 1.0, "K_A", fmt::format("expected an application factor >= 1, found {}", in.K_A));
-  require(std::isfinite(in.K_gamma) && in.K_gamma >= 1.0, "K_gamma", fmt::format("expected K_gamma >= 1, found {}", in.K_gamma));
-  require(in.quality >= 0 && in.quality <= 11, "quality", fmt::format("expected an ISO 1328 grade 1..11, found {}", in.quality));
-  require(std::isfinite(in.life_h) && in.life_h > 0.0, "life_h", fmt::format("expected a life > 0 h, found {}", in.life_h));
-  require(std::isfinite(in.nu_40) && in.nu_40 > 0.0, "nu_40", fmt::format("expected a viscosity > 0 mm^2/s, found {}", in.nu_40));
-  require(std::isfinite(in.S_Hmin) && in.S_Hmin > 0.0, "S_Hmin", fmt::format("expected S_Hmin > 0, found {}", in.S_Hmin));
-  require(std::isfinite(in.S_Fmin) && in.S_Fmin > 0.0, "S_Fmin", fmt::format("expected S_Fmin > 0, found {}", in.S_Fmin));
-  require(in.Q_v == 0 || (in.Q_v >= 3 && in.Q_v <= 16), "Q_v", fmt::format("expected an AGMA quality number 3..16, found {}", in.Q_v));
-  require(in.reliability > 0.5 && in.reliability < 1.0, "reliability",
-          fmt::format("expected a reliability in (0.5, 1), found {}", in.reliability));
+  require(std::isfinite(in.T_1) && in.T_1 > 0.0, "T_1", [&] { return fmt::format("expected a torque > 0 N m, found {}", in.T_1); });
+  require(std::isfinite(in.n_1) && in.n_1 > 0.0, "n_1", [&] { return fmt::format("expected a speed > 0 1/min, found {}", in.n_1); });
+  require(std::isfinite(in.K_A) && in.K_A >= 1.0, "K_A", [&] { return fmt::format("expected an application factor >= 1, found {}", in.K_A); });
+  require(std::isfinite(in.K_gamma) && in.K_gamma >= 1.0, "K_gamma", [&] { return fmt::format("expected K_gamma >= 1, found {}", in.K_gamma); });
+  require(in.quality >= 0 && in.quality <= 11, "quality", [&] { return fmt::format("expected an ISO 1328 grade 1..11, found {}", in.quality); });
+  require(std::isfinite(in.life_h) && in.life_h > 0.0, "life_h", [&] { return fmt::format("expected a life > 0 h, found {}", in.life_h); });
+  require(std::isfinite(in.nu_40) && in.nu_40 > 0.0, "nu_40", [&] { return fmt::format("expected a viscosity > 0 mm^2/s, found {}", in.nu_40); });
+  require(std::isfinite(in.S_Hmin) && in.S_Hmin > 0.0, "S_Hmin", [&] { return fmt::format("expected S_Hmin > 0, found {}", in.S_Hmin); });
+  require(std::isfinite(in.S_Fmin) && in.S_Fmin > 0.0, "S_Fmin", [&] { return fmt::format("expected S_Fmin > 0, found {}", in.S_Fmin); });
+  require(in.Q_v == 0 || (in.Q_v >= 3 && in.Q_v <= 16), "Q_v", [&] { return fmt::format("expected an AGMA quality number 3..16, found {}", in.Q_v); });
+  require(in.reliability > 0.5 && in.reliability < 1.0, "reliability", [&] { return fmt::format("expected a reliability in (0.5, 1), found {}", in.reliability); });
   for (int i = 0; i < 2; ++i) {
     const char* field = i == 0 ? "material1" : "material2";
     try {
@@ -225,25 +225,21 @@ void validate(const RatingInput& in) {
     } catch (const std::invalid_argument& e) {
       throw RatingError(field, e.what());
     }
-    require(in.R_z_flank[i] > 0.0 && std::isfinite(in.R_z_flank[i]), "R_z_flank",
-            fmt::format("expected a flank roughness > 0 um, found {}", in.R_z_flank[i]));
-    require(in.R_z_root[i] >= 0.0 && std::isfinite(in.R_z_root[i]), "R_z_root",
-            fmt::format("expected a root roughness >= 0 um, found {}", in.R_z_root[i]));
-    require(in.s_R[i] >= 0.0 && std::isfinite(in.s_R[i]), "s_R", fmt::format("expected a rim thickness >= 0 mm, found {}", in.s_R[i]));
-    require(in.cycles_per_rev[i] > 0.0 && std::isfinite(in.cycles_per_rev[i]), "cycles_per_rev",
-            fmt::format("expected load cycles per turn > 0, found {}", in.cycles_per_rev[i]));
+    require(in.R_z_flank[i] > 0.0 && std::isfinite(in.R_z_flank[i]), "R_z_flank", [&] { return fmt::format("expected a flank roughness > 0 um, found {}", in.R_z_flank[i]); });
+    require(in.R_z_root[i] >= 0.0 && std::isfinite(in.R_z_root[i]), "R_z_root", [&] { return fmt::format("expected a root roughness >= 0 um, found {}", in.R_z_root[i]); });
+    require(in.s_R[i] >= 0.0 && std::isfinite(in.s_R[i]), "s_R", [&] { return fmt::format("expected a rim thickness >= 0 mm, found {}", in.s_R[i]); });
+    require(in.cycles_per_rev[i] > 0.0 && std::isfinite(in.cycles_per_rev[i]), "cycles_per_rev", [&] { return fmt::format("expected load cycles per turn > 0, found {}", in.cycles_per_rev[i]); });
   }
   for (int f = 0; f < kFactorCount; ++f) {
     const double v = in.factors.value[f];
-    require(std::isnan(v) || (std::isfinite(v) && v > 0.0), "factor",
-            fmt::format("expected an imposed {} > 0, found {}", factor_name(static_cast<Factor>(f)), v));
+    require(std::isnan(v) || (std::isfinite(v) && v > 0.0), "factor", [&] { return fmt::format("expected an imposed {} > 0, found {}", factor_name(static_cast<Factor>(f)), v); });
   }
   for (std::size_t k = 0; k < in.spectrum.size(); ++k) {
     const auto& bin = in.spectrum[k];
     require(std::isfinite(bin.T_1) && bin.T_1 > 0.0 && std::isfinite(bin.n_1) && bin.n_1 > 0.0 && std::isfinite(bin.hours) &&
                 bin.hours > 0.0,
-            "spectrum", fmt::format("row {}: expected torque > 0, speed > 0 and hours > 0, found {} N m, {} 1/min, {} h", k + 1,
-                                    bin.T_1, bin.n_1, bin.hours));
+            "spectrum", [&] { return fmt::format("row {}: expected torque > 0, speed > 0 and hours > 0, found {} N m, {} 1/min, {} h", k + 1,
+                                    bin.T_1, bin.n_1, bin.hours); });
   }
 }
 
@@ -276,7 +272,7 @@ PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1,
 
 PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& in) {
   validate(in);
-  require(geometry_input.face_width > 0.0, "face_width", "the rating needs a face width b > 0 mm");
+  require(geometry_input.face_width > 0.0, "face_width", [&] { return "the rating needs a face width b > 0 mm"; });
   const Mesh m = detail::mesh_of(geometry_input, geometry);
   PairRating r;
   if (in.method == RatingMethod::iso6336 && in.quality > 0) {
