@@ -269,187 +269,244 @@ GearPairResult compute_gear_pair(const GearPairInput& in) {
 
 namespace {
 
-GearPairResult compute_checked(const GearPairInput& in) {
-  const Basics b = basics_of(in);
-  GearPairResult r;
+// Working values shared by the steps of compute_checked (signed ISO 21771 values).
+struct Work {
+  const GearPairInput& in;
+  Basics b;
+  double sign = 1.0;
+  double x1 = 0, x2 = 0, a = 0, alpha_wt = 0, k_used = 0;
+  double s_t[2] = {0, 0}, A_sn[2] = {0, 0}, d_a[2] = {0, 0}, rho_Ff[2] = {0, 0};
+  double rho_tip1 = 0, rho_tip2 = 0, g_len = 0;
+  BacklashInput bl{};
+};
+
+// Shifts and working pressure angle for a given centre distance (the split of the shift sum).
+void mount_at_centre_distance(Work& w, GearPairResult& r) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
   PairResult& p = r.pair;
-  const double sign = in.internal ? -1.0 : 1.0;
-
-  // Working pressure angle, centre distance and shifts.
-  double x1 = in.x1, x2 = in.x2, a = 0, alpha_wt = 0;
+  double &x1 = w.x1, &x2 = w.x2, &a = w.a, &alpha_wt = w.alpha_wt;
+  x1 = in.x1;
+  x2 = in.x2;
+  const double sign = w.sign;
   const double x_thin = -std::numbers::pi / (4.0 * b.tan_alpha_n);  // s = 0 at the reference circle
-  if (in.centre_distance) {
-    const double a_in = *in.centre_distance;
-    require(std::isfinite(a_in) && a_in > 0.0, "centre_distance", [&] { return fmt::format("expected a centre distance > 0 mm, found {}", a_in); });
-    a = sign * a_in;
-    try {
-      alpha_wt = working_pressure_angle_for_centre_distance(b.a_d, b.alpha_t, a);
-    } catch (const std::domain_error&) {
-      throw GeometryError("centre_distance",
-                          fmt::format("the pair cannot reach {:.4f} mm: the centre distance must be at least {:.4f} mm ({} of the base radii)",
-                                      a_in, std::fabs(b.a_d * std::cos(b.alpha_t)), in.internal ? "difference" : "sum"));
-    }
-    p.sum_x = sum_of_shifts(b.Z1, b.Z2, b.alpha_t, b.alpha_n, alpha_wt);
-    const double y = centre_distance_modification(a, b.a_d, b.m_n);
-    const double k = std::max(0.0, tip_shortening(p.sum_x, y));
-    const double k_used = in.apply_tip_shortening ? k : 0.0;
-    p.split = in.split;
-    switch (in.split) {
-      case ShiftSplit::user_x1: x1 = in.x1; break;
-      case ShiftSplit::proportional: x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2); break;
-      case ShiftSplit::balanced_sliding:
-        x1 = balanced_x1(b, p.sum_x, k_used, a, alpha_wt);
-        if (std::isnan(x1)) {
-          x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2);
-          p.split = ShiftSplit::proportional;
-          r.warnings.push_back("no split of the shift sum balances the specific sliding; the proportional split is used");
-        }
-        break;
-    }
-    x2 = p.sum_x - x1;
-    // Reachable unless the split leaves a pointed tooth; then the shift sum decides whether any
-    // split could do better (error) or only this one is poor (warnings follow).
-    if (!in.internal && (full_tip_thickness(b, 0, x1) <= 0.0 || full_tip_thickness(b, 1, x2) <= 0.0)) {
-      const double limit = pointed_shift(b, 0) + pointed_shift(b, 1);
-      if (p.sum_x > limit) {
-        throw GeometryError("centre_distance",
-                            fmt::format("the pair cannot reach {:.4f} mm: it needs x1 + x2 = {:.4f}, but the teeth become "
-                                        "pointed beyond x1 + x2 = {:.4f} (at most {:.4f} mm)",
-                                        a_in, p.sum_x, limit, std::fabs(centre_distance(b.a_d, b.alpha_t,
-                                            working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, limit)))));
-      }
-    }
-    if (x1 <= x_thin || x2 <= x_thin) {
-      throw GeometryError("centre_distance",
-                          fmt::format("the pair cannot reach {:.4f} mm: the shift split x1 = {:.4f}, x2 = {:.4f} leaves no tooth at "
-                                      "the reference circle",
-                                      a_in, x1, x2));
-    }
-  } else {
-    require(std::isfinite(x1) && x1 > x_thin, "x1", [&] { return fmt::format("expected x1 > {:.4f} (tooth thickness > 0), found {}", x_thin, x1); });
-    require(std::isfinite(x2) && x2 > x_thin, "x2", [&] { return fmt::format("expected x2 > {:.4f} (tooth thickness > 0), found {}", x_thin, x2); });
-    p.sum_x = x1 + x2;
-    p.split = ShiftSplit::user_x1;
-    try {
-      alpha_wt = working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, p.sum_x);
-    } catch (const std::domain_error&) {
-      throw GeometryError("x2", fmt::format("the shift sum x1 + x2 = {:.4f} is out of reach: it would need a working pressure "
-                                            "angle below zero (the base circles would overlap)",
-                                            p.sum_x));
-    }
-    a = centre_distance(b.a_d, b.alpha_t, alpha_wt);
+  const double a_in = *in.centre_distance;
+  require(std::isfinite(a_in) && a_in > 0.0, "centre_distance", [&] { return fmt::format("expected a centre distance > 0 mm, found {}", a_in); });
+  a = sign * a_in;
+  try {
+    alpha_wt = working_pressure_angle_for_centre_distance(b.a_d, b.alpha_t, a);
+  } catch (const std::domain_error&) {
+    throw GeometryError("centre_distance",
+                        fmt::format("the pair cannot reach {:.4f} mm: the centre distance must be at least {:.4f} mm ({} of the base radii)",
+                                    a_in, std::fabs(b.a_d * std::cos(b.alpha_t)), in.internal ? "difference" : "sum"));
   }
+  p.sum_x = sum_of_shifts(b.Z1, b.Z2, b.alpha_t, b.alpha_n, alpha_wt);
+  const double y = centre_distance_modification(a, b.a_d, b.m_n);
+  const double k = std::max(0.0, tip_shortening(p.sum_x, y));
+  const double k_used = in.apply_tip_shortening ? k : 0.0;
+  p.split = in.split;
+  switch (in.split) {
+    case ShiftSplit::user_x1: x1 = in.x1; break;
+    case ShiftSplit::proportional: x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2); break;
+    case ShiftSplit::balanced_sliding:
+      x1 = balanced_x1(b, p.sum_x, k_used, a, alpha_wt);
+      if (std::isnan(x1)) {
+        x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2);
+        p.split = ShiftSplit::proportional;
+        r.warnings.push_back("no split of the shift sum balances the specific sliding; the proportional split is used");
+      }
+      break;
+  }
+  x2 = p.sum_x - x1;
+  // Reachable unless the split leaves a pointed tooth; then the shift sum decides whether any
+  // split could do better (error) or only this one is poor (warnings follow).
+  if (!in.internal && (full_tip_thickness(b, 0, x1) <= 0.0 || full_tip_thickness(b, 1, x2) <= 0.0)) {
+    const double limit = pointed_shift(b, 0) + pointed_shift(b, 1);
+    if (p.sum_x > limit) {
+      throw GeometryError("centre_distance",
+                          fmt::format("the pair cannot reach {:.4f} mm: it needs x1 + x2 = {:.4f}, but the teeth become "
+                                      "pointed beyond x1 + x2 = {:.4f} (at most {:.4f} mm)",
+                                      a_in, p.sum_x, limit, std::fabs(centre_distance(b.a_d, b.alpha_t,
+                                          working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, limit)))));
+    }
+  }
+  if (x1 <= x_thin || x2 <= x_thin) {
+    throw GeometryError("centre_distance",
+                        fmt::format("the pair cannot reach {:.4f} mm: the shift split x1 = {:.4f}, x2 = {:.4f} leaves no tooth at "
+                                    "the reference circle",
+                                    a_in, x1, x2));
+  }
+}
 
+// Working pressure angle and centre distance for given shifts.
+void mount_at_shifts(Work& w, GearPairResult& r) {
+  const Basics& b = w.b;
+  PairResult& p = r.pair;
+  double &x1 = w.x1, &x2 = w.x2, &a = w.a, &alpha_wt = w.alpha_wt;
+  x1 = w.in.x1;
+  x2 = w.in.x2;
+  const double x_thin = -std::numbers::pi / (4.0 * b.tan_alpha_n);  // s = 0 at the reference circle
+  require(std::isfinite(x1) && x1 > x_thin, "x1", [&] { return fmt::format("expected x1 > {:.4f} (tooth thickness > 0), found {}", x_thin, x1); });
+  require(std::isfinite(x2) && x2 > x_thin, "x2", [&] { return fmt::format("expected x2 > {:.4f} (tooth thickness > 0), found {}", x_thin, x2); });
+  p.sum_x = x1 + x2;
+  p.split = ShiftSplit::user_x1;
+  try {
+    alpha_wt = working_pressure_angle(b.alpha_t, b.alpha_n, b.Z1, b.Z2, p.sum_x);
+  } catch (const std::domain_error&) {
+    throw GeometryError("x2", fmt::format("the shift sum x1 + x2 = {:.4f} is out of reach: it would need a working pressure "
+                                          "angle below zero (the base circles would overlap)",
+                                          p.sum_x));
+  }
+  a = centre_distance(b.a_d, b.alpha_t, alpha_wt);
+}
+
+void pair_basics(Work& w, PairResult& p) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
+  const double a = w.a, alpha_wt = w.alpha_wt, x1 = w.x1, x2 = w.x2;
   p.alpha_wt = alpha_wt;
   p.a = std::fabs(a);
   p.a_d = std::fabs(b.a_d);
   p.y = centre_distance_modification(a, b.a_d, b.m_n);
   p.k = tip_shortening(p.sum_x, p.y);
   p.tip_shortened = in.apply_tip_shortening && p.k > 1e-12;
-  const double k_used = p.tip_shortened ? p.k : 0.0;
+  w.k_used = p.tip_shortened ? p.k : 0.0;
   p.mounting = mounting_type(x1, x2);
   p.u = static_cast<double>(in.z2) / in.z1;
+}
 
-  // Allowances.
+// Thickness allowances (given, or for a target backlash) and the backlash input.
+void thickness_allowances(Work& w) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
+  const double a = w.a, sign = w.sign;
   double A_sn1 = in.A_sn1, A_sn2 = in.A_sn2;
   const double a_actual = a + sign * in.A_a;
-  const double x_of[2] = {x1, x2};
-  const int Z[2] = {b.Z1, b.Z2};
-  const double d[2] = {b.d1, b.d2};
-  const double d_b[2] = {b.d_b1, b.d_b2};
-  double s_t[2];
+  const double x_of[2] = {w.x1, w.x2};
+  double* s_t = w.s_t;
   for (int i = 0; i < 2; ++i) s_t[i] = reference_tooth_thickness(b.m_t, x_of[i], b.alpha_n);
-  BacklashInput bl{b.Z1, b.Z2, b.d1, b.d2, b.d_b1, b.d_b2, b.alpha_t, b.beta_b, s_t[0], s_t[1], a_actual};
+  w.bl = BacklashInput{b.Z1, b.Z2, b.d1, b.d2, b.d_b1, b.d_b2, b.alpha_t, b.beta_b, s_t[0], s_t[1], a_actual};
   if (in.backlash_target) {
     require(std::isfinite(*in.backlash_target) && *in.backlash_target >= 0.0, "backlash_target", [&] { return
             fmt::format("expected a backlash >= 0 mm, found {}", *in.backlash_target); });
     try {
-      A_sn1 = A_sn2 = allowance_for_backlash(bl, b.alpha_n, *in.backlash_target);
+      A_sn1 = A_sn2 = allowance_for_backlash(w.bl, b.alpha_n, *in.backlash_target);
     } catch (const std::domain_error&) {
       throw GeometryError("A_a", "the centre distance deviation puts the base circles out of reach");
     }
   }
-  const double A_sn[2] = {A_sn1, A_sn2};
+  w.A_sn[0] = A_sn1;
+  w.A_sn[1] = A_sn2;
+}
 
-  // Per gear.
-  double rho_Ff_of[2] = {0.0, 0.0};
-  for (int i = 0; i < 2; ++i) {
-    GearResult& g = r.gear[i];
-    const bool ring = Z[i] < 0;
-    g.z = std::abs(Z[i]);
-    g.internal = ring;
-    g.x = x_of[i];
-    g.shift_mm = g.x * b.m_n;
-    g.m_n = b.m_n;
-    g.m_t = b.m_t;
-    g.alpha_n = b.alpha_n;
-    g.alpha_t = b.alpha_t;
-    g.beta = b.beta;
-    g.beta_b = b.beta_b;
-    const double d_a = tip_diameter(d[i], b.m_n, b.rack.h_aP, g.x, k_used);
-    const double d_f = root_diameter(d[i], b.m_n, b.rack.h_fP, g.x);
-    const double d_w = 2.0 * a * Z[i] / (b.Z1 + b.Z2);
-    g.d = std::fabs(d[i]);
-    g.d_b = std::fabs(d_b[i]);
-    g.d_w = std::fabs(d_w);
-    g.d_a = std::fabs(d_a);
-    g.d_f = std::fabs(d_f);
-    g.p_t = std::numbers::pi * b.m_t;
-    g.p_n = std::numbers::pi * b.m_n;
-    g.p_bt = g.p_t * std::cos(b.alpha_t);
-    g.p_en = g.p_n * std::cos(b.alpha_n);
-    g.s_t = s_t[i];
-    g.e_t = g.p_t - g.s_t;
-    g.s_n = g.s_t * std::cos(b.beta);
-    g.e_n = g.e_t * std::cos(b.beta);
-    const ToothData nominal = tooth_data(i, b, s_t[i]);
-    if (std::fabs(d_a) > std::fabs(d_b[i])) {
-      const double s_at = tooth_thickness_at(nominal, d_a);
-      g.s_an = b.beta == 0.0 ? s_at : s_at * std::cos(helix_angle_at(b.beta, d[i], d_a));
-    } else {
-      g.s_an = std::numeric_limits<double>::quiet_NaN();
-    }
-    g.z_n = b.beta == 0.0 ? g.z : std::fabs(virtual_number_of_teeth(Z[i], b.beta, b.alpha_n));
-    g.A_sn = A_sn[i];
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    if (!ring) {
-      g.x_min = min_shift_no_undercut(d[i], b.m_n, b.alpha_t, b.rack);
-      const double rho_Ff = form_roll_length(d_b[i], b.alpha_t, b.m_n, g.x, b.rack);
-      rho_Ff_of[i] = std::max(0.0, rho_Ff);
-      g.d_Ff = rho_Ff > 0.0 ? 2.0 * std::hypot(0.5 * g.d_b, rho_Ff) : g.d_b;
-    } else {
-      g.x_min = nan;
-      g.d_Ff = nan;
-    }
-    const ToothData actual = tooth_data(i, b, s_t[i] + A_sn[i] / std::cos(b.beta));
-    if (!ring && g.z >= 2) {
-      g.k_span = span_teeth(nominal);
-      g.W_k = span_measurement(nominal, g.k_span);
-      g.W_k_actual = A_sn[i] == 0.0 ? g.W_k : span_measurement(actual, g.k_span);
-    } else {
-      g.k_span = 0;
-      g.W_k = g.W_k_actual = nan;
-    }
-    const std::optional<double>& D_given = i == 0 ? in.pin_diameter1 : in.pin_diameter2;
-    try {
-      if (D_given) {
-        require(std::isfinite(*D_given) && *D_given > 0.0, i == 0 ? "pin_diameter1" : "pin_diameter2", [&] { return
-                fmt::format("expected a pin diameter > 0 mm, found {}", *D_given); });
-        g.pin_diameter = *D_given;
-      } else {
-        g.pin_diameter = pin_diameter_for_contact_at(nominal, d[i] + 2.0 * g.x * b.m_n);
-      }
-      g.M_d = dimension_over_pins(nominal, g.pin_diameter);
-      g.M_d_actual = A_sn[i] == 0.0 ? g.M_d : dimension_over_pins(actual, g.pin_diameter);
-    } catch (const std::domain_error&) {
-      g.M_d = g.M_d_actual = nan;
-      r.warnings.push_back(fmt::format("gear {}: no measurement over pins possible (the pin does not fit the tooth space)", i + 1));
-    }
-    g.chordal_s = chordal_thickness(nominal);
-    g.chordal_h = chordal_height(nominal, d_a);
+// Dimensions of gear i.
+void gear_dimensions(Work& w, int i, GearResult& g) {
+  const Basics& b = w.b;
+  const double a = w.a, k_used = w.k_used;
+  const double x_of[2] = {w.x1, w.x2};
+  const int Z[2] = {b.Z1, b.Z2};
+  const double d[2] = {b.d1, b.d2};
+  const double d_b[2] = {b.d_b1, b.d_b2};
+  const double* s_t = w.s_t;
+  const double* A_sn = w.A_sn;
+  const bool ring = Z[i] < 0;
+  g.z = std::abs(Z[i]);
+  g.internal = ring;
+  g.x = x_of[i];
+  g.shift_mm = g.x * b.m_n;
+  g.m_n = b.m_n;
+  g.m_t = b.m_t;
+  g.alpha_n = b.alpha_n;
+  g.alpha_t = b.alpha_t;
+  g.beta = b.beta;
+  g.beta_b = b.beta_b;
+  const double d_a = tip_diameter(d[i], b.m_n, b.rack.h_aP, g.x, k_used);
+  w.d_a[i] = d_a;
+  const double d_f = root_diameter(d[i], b.m_n, b.rack.h_fP, g.x);
+  const double d_w = 2.0 * a * Z[i] / (b.Z1 + b.Z2);
+  g.d = std::fabs(d[i]);
+  g.d_b = std::fabs(d_b[i]);
+  g.d_w = std::fabs(d_w);
+  g.d_a = std::fabs(d_a);
+  g.d_f = std::fabs(d_f);
+  g.p_t = std::numbers::pi * b.m_t;
+  g.p_n = std::numbers::pi * b.m_n;
+  g.p_bt = g.p_t * std::cos(b.alpha_t);
+  g.p_en = g.p_n * std::cos(b.alpha_n);
+  g.s_t = s_t[i];
+  g.e_t = g.p_t - g.s_t;
+  g.s_n = g.s_t * std::cos(b.beta);
+  g.e_n = g.e_t * std::cos(b.beta);
+  const ToothData nominal = tooth_data(i, b, s_t[i]);
+  if (std::fabs(d_a) > std::fabs(d_b[i])) {
+    const double s_at = tooth_thickness_at(nominal, d_a);
+    g.s_an = b.beta == 0.0 ? s_at : s_at * std::cos(helix_angle_at(b.beta, d[i], d_a));
+  } else {
+    g.s_an = std::numeric_limits<double>::quiet_NaN();
   }
+  g.z_n = b.beta == 0.0 ? g.z : std::fabs(virtual_number_of_teeth(Z[i], b.beta, b.alpha_n));
+  g.A_sn = A_sn[i];
+}
 
-  // Pair quantities.
+// Undercut limit, form circle and the measurements (span, pins, chordal) of gear i.
+void gear_measurements(Work& w, int i, GearResult& g, std::vector<std::string>& warnings) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
+  const int Z[2] = {b.Z1, b.Z2};
+  const double d[2] = {b.d1, b.d2};
+  const double d_b[2] = {b.d_b1, b.d_b2};
+  const double* s_t = w.s_t;
+  const double* A_sn = w.A_sn;
+  const bool ring = Z[i] < 0;
+  const double d_a = w.d_a[i];
+  const ToothData nominal = tooth_data(i, b, s_t[i]);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!ring) {
+    g.x_min = min_shift_no_undercut(d[i], b.m_n, b.alpha_t, b.rack);
+    const double rho_Ff = form_roll_length(d_b[i], b.alpha_t, b.m_n, g.x, b.rack);
+    w.rho_Ff[i] = std::max(0.0, rho_Ff);
+    g.d_Ff = rho_Ff > 0.0 ? 2.0 * std::hypot(0.5 * g.d_b, rho_Ff) : g.d_b;
+  } else {
+    g.x_min = nan;
+    g.d_Ff = nan;
+  }
+  const ToothData actual = tooth_data(i, b, s_t[i] + A_sn[i] / std::cos(b.beta));
+  if (!ring && g.z >= 2) {
+    g.k_span = span_teeth(nominal);
+    g.W_k = span_measurement(nominal, g.k_span);
+    g.W_k_actual = A_sn[i] == 0.0 ? g.W_k : span_measurement(actual, g.k_span);
+  } else {
+    g.k_span = 0;
+    g.W_k = g.W_k_actual = nan;
+  }
+  const std::optional<double>& D_given = i == 0 ? in.pin_diameter1 : in.pin_diameter2;
+  try {
+    if (D_given) {
+      require(std::isfinite(*D_given) && *D_given > 0.0, i == 0 ? "pin_diameter1" : "pin_diameter2", [&] { return
+              fmt::format("expected a pin diameter > 0 mm, found {}", *D_given); });
+      g.pin_diameter = *D_given;
+    } else {
+      g.pin_diameter = pin_diameter_for_contact_at(nominal, d[i] + 2.0 * g.x * b.m_n);
+    }
+    g.M_d = dimension_over_pins(nominal, g.pin_diameter);
+    g.M_d_actual = A_sn[i] == 0.0 ? g.M_d : dimension_over_pins(actual, g.pin_diameter);
+  } catch (const std::domain_error&) {
+    g.M_d = g.M_d_actual = nan;
+    warnings.push_back(fmt::format("gear {}: no measurement over pins possible (the pin does not fit the tooth space)", i + 1));
+  }
+  g.chordal_s = chordal_thickness(nominal);
+  g.chordal_h = chordal_height(nominal, d_a);
+}
+
+// Contact ratios, clearances, specific sliding and backlash.
+void pair_quantities(Work& w, GearPairResult& r) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
+  PairResult& p = r.pair;
+  const double a = w.a, alpha_wt = w.alpha_wt, sign = w.sign;
+  const double* s_t = w.s_t;
+  const double A_sn1 = w.A_sn[0], A_sn2 = w.A_sn[1];
+  BacklashInput& bl = w.bl;
   const double d_a1 = (r.gear[0].d_a), d_a2 = sign * r.gear[1].d_a;
   const double d_f1 = r.gear[0].d_f, d_f2 = sign * r.gear[1].d_f;
   // Roll lengths to the tip circles (0 when a tip lies inside its base circle: the involute, and
@@ -457,9 +514,10 @@ GearPairResult compute_checked(const GearPairInput& in) {
   auto tip_roll = [](double d_b_i, double d_a_i) {
     return std::copysign(std::sqrt(std::max(0.0, 0.25 * (d_a_i * d_a_i - d_b_i * d_b_i))), d_b_i);
   };
-  const double rho_tip1 = tip_roll(b.d_b1, d_a1);
-  const double rho_tip2 = tip_roll(b.d_b2, d_a2);
-  const double g_len = a * std::sin(alpha_wt);
+  w.rho_tip1 = tip_roll(b.d_b1, d_a1);
+  w.rho_tip2 = tip_roll(b.d_b2, d_a2);
+  w.g_len = a * std::sin(alpha_wt);
+  const double rho_tip1 = w.rho_tip1, rho_tip2 = w.rho_tip2;
   p.eps_alpha = transverse_contact_ratio_from_lengths(rho_tip1, rho_tip2, a, alpha_wt, r.gear[0].p_bt);
   p.eps_beta = overlap_ratio(in.face_width, b.beta, b.m_n);
   p.eps_gamma = p.eps_alpha + p.eps_beta;
@@ -478,8 +536,11 @@ GearPairResult compute_checked(const GearPairInput& in) {
       throw GeometryError("A_a", "the centre distance deviation puts the base circles out of reach");
     }
   }  // else zero by construction: nominal teeth mesh without backlash at a (test_backlash.cpp)
+}
 
-  // Checks.
+void tooth_checks(const Work& w, GearPairResult& r) {
+  const Basics& b = w.b;
+  const PairResult& p = r.pair;
   auto warn = [&r](std::string text) { r.warnings.push_back(std::move(text)); };
   for (int i = 0; i < 2; ++i) {
     const GearResult& g = r.gear[i];
@@ -499,7 +560,18 @@ GearPairResult compute_checked(const GearPairInput& in) {
   } else if (p.eps_alpha < 1.2) {
     warn(fmt::format("transverse contact ratio {:.3f} < 1.2", p.eps_alpha));
   }
-  // Involute interference: the contact at the root of gear i must start on its generated involute.
+}
+
+// Involute and trochoid interference: the contact at the root of gear i must start on its
+// generated involute.
+void interference_checks(const Work& w, GearPairResult& r) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
+  const PairResult& p = r.pair;
+  auto warn = [&r](std::string text) { r.warnings.push_back(std::move(text)); };
+  const double g_len = w.g_len, rho_tip1 = w.rho_tip1, rho_tip2 = w.rho_tip2, alpha_wt = w.alpha_wt;
+  const double d_a2 = w.sign * r.gear[1].d_a;
+  const double* rho_Ff_of = w.rho_Ff;
   const double rho_root1 = g_len - rho_tip2;
   const double rho_root2 = g_len - rho_tip1;
   {
@@ -525,6 +597,14 @@ GearPairResult compute_checked(const GearPairInput& in) {
       }
     }
   }
+}
+
+// Whether the measurements can be taken, clearances and backlash.
+void measurement_checks(const Work& w, GearPairResult& r) {
+  const GearPairInput& in = w.in;
+  const Basics& b = w.b;
+  const PairResult& p = r.pair;
+  auto warn = [&r](std::string text) { r.warnings.push_back(std::move(text)); };
   for (int i = 0; i < 2; ++i) {
     const GearResult& g = r.gear[i];
     // A micrometer needs the pins to stand out of the tip circle (inwards for a ring).
@@ -541,6 +621,27 @@ GearPairResult compute_checked(const GearPairInput& in) {
   if (p.c1 < -1e-9) warn(fmt::format("negative tip clearance {:.3f} mm between the tip of gear 1 and the root of gear 2", p.c1));
   if (p.c2 < -1e-9) warn(fmt::format("negative tip clearance {:.3f} mm between the tip of gear 2 and the root of gear 1", p.c2));
   if (p.j_wt < -1e-9) warn(fmt::format("negative backlash {:.4f} mm: the teeth jam at the actual centre distance", p.j_wt));
+}
+
+GearPairResult compute_checked(const GearPairInput& in) {
+  Work w{in, basics_of(in)};
+  w.sign = in.internal ? -1.0 : 1.0;
+  GearPairResult r;
+  if (in.centre_distance) {
+    mount_at_centre_distance(w, r);
+  } else {
+    mount_at_shifts(w, r);
+  }
+  pair_basics(w, r.pair);
+  thickness_allowances(w);
+  for (int i = 0; i < 2; ++i) {
+    gear_dimensions(w, i, r.gear[i]);
+    gear_measurements(w, i, r.gear[i], r.warnings);
+  }
+  pair_quantities(w, r);
+  tooth_checks(w, r);
+  interference_checks(w, r);
+  measurement_checks(w, r);
   return r;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace gearkit::gear::detail {
 
@@ -96,11 +97,12 @@ void safety_warnings(const RatingInput& in, PairRating& r) {
     if (g.S_F < in.S_Fmin) {
       r.warnings.push_back(fmt::format("gear {}: tooth-root safety S_F = {:.3f} below S_Fmin = {:.2f}", i + 1, g.S_F, in.S_Fmin));
     }
-    if (g.damage_H > 1.0) {
-      r.warnings.push_back(fmt::format("gear {}: pitting damage sum {:.3f} > 1 (life {:.4g} h)", i + 1, g.damage_H, g.life_H_h));
-    }
-    if (g.damage_F > 1.0) {
-      r.warnings.push_back(fmt::format("gear {}: tooth-root damage sum {:.3f} > 1 (life {:.4g} h)", i + 1, g.damage_F, g.life_F_h));
+    for (auto [what, D, life] : {std::tuple{"pitting", g.damage_H, g.life_H_h}, {"tooth-root", g.damage_F, g.life_F_h}}) {
+      if (std::isinf(D)) {
+        r.warnings.push_back(fmt::format("gear {}: {} stress above the static limit of the life line (no life at S_min)", i + 1, what));
+      } else if (D > 1.0) {
+        r.warnings.push_back(fmt::format("gear {}: {} damage sum {:.3f} > 1 (life {:.4g} h)", i + 1, what, D, life));
+      }
     }
   }
 }

@@ -1,19 +1,29 @@
 // `gearkit gear ...`: the gear table of a cylindrical involute pair (libgear) with its checks,
-// measurements and, on request, the tooth-form drawing (SVG/DXF).
+// measurements, accuracy and inspection data, on request the load capacity (ISO 6336, AGMA,
+// Lewis/Hertz) and the tooth-form drawing (SVG/DXF); the pair from options or from a gear-pair
+// file; `gearkit gear size`.
 #include "gear_command.hpp"
 
 #include "gear_options.hpp"
+#include "gear_pair_file.hpp"
+#include "gear_rating_options.hpp"
+#include "gear_rating_report.hpp"
 #include "gear_report.hpp"
+#include "gear_size.hpp"
 #include "gear_tolerance_options.hpp"
 #include "gear_tolerance_report.hpp"
 
 #include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/gear/rating.hpp>
 #include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/drawing.hpp>
 #include <gearkit/io/error.hpp>
 
 #include <fmt/format.h>
+
+#include <optional>
+#include <set>
 
 namespace gearkit::plugins::gear {
 
@@ -22,13 +32,15 @@ namespace gg = gearkit::gear;
 namespace {
 
 constexpr std::string_view kUsage =
-    "gearkit gear --z1 N --z2 N --module LEN [--pressure-angle 20] [--helix-angle 0] "
+    "gearkit gear [PAIR.yaml] --z1 N --z2 N --module LEN [--pressure-angle 20] [--helix-angle 0] "
     "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional]] [--internal] [--transverse] "
     "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
     "[--pin-diameter LEN] [--quality Q[,Q2] [--iso1328-edition 2013|1995]] "
     "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW | --din3967 27cd[,26cd]] [--min-backlash LEN] "
     "[--centre-distance-tolerance jsN | --centre-distance-allowances UP,LOW] [--temperature T[,T_HOUSING] "
-    "[--expansion A1,A2,AH]] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] [--draw pair|gear1|gear2]";
+    "[--expansion A1,A2,AH]] [--torque1 T | --power P --speed1 N --material1 M --material2 M "
+    "[--method iso6336|agma|lewis-hertz] [--factor NAME=VALUE]...] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] "
+    "[--draw pair|gear1|gear2]\n       gearkit gear size --help";
 
 // gearkit 0.1 spelled two options the American way; the old names stay accepted for one release
 // (docs/gear.md) and are read as the new ones.
@@ -56,42 +68,92 @@ gg::InspectionResult inspect(const gg::GearPairInput& input, const gg::GearPairR
   }
 }
 
+// The pair, its inspection and its load, from the options or from a pair file.
+struct Request {
+  GearCommandOptions options;
+  std::optional<gg::InspectionInput> inspection;
+  std::optional<gg::RatingInput> rating;
+  std::optional<PairFile> file;
+};
+
+Request read_request(const io::po::variables_map& vm) {
+  Request q;
+  if (vm.count("file")) {
+    static const std::set<std::string> output = {"file", "format", "output", "strict", "svg", "dxf", "draw", "help"};
+    for (const auto& [name, value] : vm) {
+      if (!value.defaulted() && !output.count(name)) {
+        io::fail_option(fmt::format("--{}", name), "cannot be combined with a gear-pair file (the file holds the pair and its load)");
+      }
+    }
+    q.file = read_pair_file(vm["file"].as<std::string>());
+    q.options.input = q.file->geometry;
+    q.rating = q.file->rating;
+    read_drawing_options(vm, q.options);
+    return q;
+  }
+  q.options = read_gear_options(vm);
+  q.inspection = read_tolerance_options(vm);
+  if (rating_requested(vm)) {
+    q.rating = read_rating_options(vm);
+  } else if (any_rating_option(vm)) {
+    io::fail_option("--torque1", "the load-capacity options need the load: give --torque1 or --power (with --speed1)");
+  }
+  return q;
+}
+
+[[noreturn]] void fail_field(const Request& q, const std::string& option, const std::string& field, const std::string& message) {
+  if (q.file) io::fail_at(mark_for_field(*q.file, field), message);
+  io::fail_option(fmt::format("--{}", option), message);
+}
+
+void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, const gg::GearPairResult& result) {
+  if (options.svg.empty() && options.dxf.empty()) return;
+  const io::Drawing drawing = gear_drawing(options.input, result, options.draw);
+  if (!options.svg.empty()) {
+    io::SvgOptions svg;
+    svg.title = fmt::format("gearkit gear: z1 = {}, z2 = {}", options.input.z1, options.input.z2);
+    outputs.add("--svg", options.svg, io::to_svg(drawing, svg));
+  }
+  if (!options.dxf.empty()) outputs.add("--dxf", options.dxf, io::to_dxf(drawing));
+}
+
 }  // namespace
 
 int run_gear_command(kin::CommandContext& context) {
-  io::po::options_description desc("gearkit gear options (bare numbers: mm and deg)");
+  if (!context.args.empty() && context.args.front() == "size") return run_gear_size_command(context);
+  io::po::options_description desc("gearkit gear options (bare numbers: mm and deg; rating: N*m, kW, rpm, h, um)");
   add_gear_options(desc);
   add_tolerance_options(desc);
+  add_rating_options(desc);
   io::add_common_options(desc);
-  io::po::positional_options_description none;
+  desc.add_options()("file", io::po::value<std::string>()->value_name("PAIR.yaml"), "gear-pair file (docs/rating.md)");
+  io::po::positional_options_description positional;
+  positional.add("file", 1);
   io::po::variables_map vm;
-  if (!io::parse_command_line(with_centre_spelling(context.args), desc, none, vm, kUsage, context.out)) return 0;
-  const GearCommandOptions options = read_gear_options(vm);
-  const std::optional<gg::InspectionInput> inspection_input = read_tolerance_options(vm);
+  if (!io::parse_command_line(with_centre_spelling(context.args), desc, positional, vm, kUsage, context.out)) return 0;
+  const Request q = read_request(vm);
   const io::CommonOptions common = io::common_options(vm);
 
   gg::GearPairResult result;
   try {
-    result = gg::compute_gear_pair(options.input);
+    result = gg::compute_gear_pair(q.options.input);
   } catch (const gg::GeometryError& e) {
-    io::fail_option(fmt::format("--{}", option_for_field(e.field())), e.what());
+    fail_field(q, option_for_field(e.field()), e.field(), e.what());
   }
-
   std::optional<gg::InspectionResult> inspection;
-  if (inspection_input) inspection = inspect(options.input, result, *inspection_input, vm);
+  if (q.inspection) inspection = inspect(q.options.input, result, *q.inspection, vm);
 
-  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
-  if (!options.svg.empty() || !options.dxf.empty()) {
-    const io::Drawing drawing = gear_drawing(options.input, result, options.draw);
-    if (!options.svg.empty()) {
-      io::SvgOptions svg;
-      svg.title = fmt::format("gearkit gear: z1 = {}, z2 = {}", options.input.z1, options.input.z2);
-      outputs.add("--svg", options.svg, io::to_svg(drawing, svg));
-    }
-    if (!options.dxf.empty()) outputs.add("--dxf", options.dxf, io::to_dxf(drawing));
-  }
-  io::Report report = gear_report(options.input, result);
+  io::Report report = gear_report(q.options.input, result);
   if (inspection) add_inspection_report(report, *inspection);
+  if (q.rating) {
+    try {
+      add_rating_report(report, *q.rating, gg::rate_gear_pair(q.options.input, result, *q.rating));
+    } catch (const gg::RatingError& e) {
+      fail_field(q, option_for_rating_field(e.field()), e.field(), e.what());
+    }
+  }
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
+  add_drawings(outputs, q.options, result);
   return io::emit(report, common, outputs);
 }
 

@@ -66,9 +66,9 @@ void exclusive(const io::po::variables_map& vm, const char* a, const char* b, st
 void add_gear_options(io::po::options_description& desc) {
   namespace po = io::po;
   desc.add_options()
-      ("z1", po::value<std::string>()->required()->value_name("N"), "teeth of gear 1 (pinion)")
-      ("z2", po::value<std::string>()->required()->value_name("N"), "teeth of gear 2 (wheel, or ring with --internal)")
-      ("module", po::value<std::string>()->required()->value_name("LEN"), "module (normal; transverse with --transverse), mm")
+      ("z1", po::value<std::string>()->value_name("N"), "teeth of gear 1 (pinion)")
+      ("z2", po::value<std::string>()->value_name("N"), "teeth of gear 2 (wheel, or ring with --internal)")
+      ("module", po::value<std::string>()->value_name("LEN"), "module (normal; transverse with --transverse), mm")
       ("pressure-angle", po::value<std::string>()->value_name("ANGLE"), "pressure angle, deg (default 20)")
       ("helix-angle", po::value<std::string>()->value_name("ANGLE"), "helix angle, deg (default 0: spur)")
       ("x1", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 1 (default 0)")
@@ -96,9 +96,9 @@ void add_gear_options(io::po::options_description& desc) {
       ("draw", po::value<std::string>()->value_name("pair|gear1|gear2"), "what --svg/--dxf draw (default pair)");
 }
 
-GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
-  GearCommandOptions o;
-  gg::GearPairInput& in = o.input;
+namespace {
+
+void read_teeth_and_module(const io::po::variables_map& vm, gg::GearPairInput& in) {
   in.z1 = teeth(vm, "z1");
   in.z2 = teeth(vm, "z2");
   in.internal = vm["internal"].as<bool>();
@@ -122,6 +122,9 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
       fail("helix-angle", fmt::format("expected an angle in (-45, 45) deg, found {} deg", in.helix_angle / kDeg));
     }
   }
+}
+
+void read_rack(const io::po::variables_map& vm, gg::GearPairInput& in) {
   if (given(vm, "addendum")) in.h_aP = number(vm, "addendum");
   if (given(vm, "dedendum")) in.h_fP = number(vm, "dedendum");
   if (given(vm, "root-radius")) in.rho_fP = number(vm, "root-radius");
@@ -130,7 +133,9 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
     fail("dedendum", fmt::format("expected a coefficient >= the addendum coefficient {}, found {}", in.h_aP, in.h_fP));
   }
   if (!(in.rho_fP >= 0.0)) fail("root-radius", fmt::format("expected a coefficient >= 0, found {}", in.rho_fP));
+}
 
+void read_shift(const io::po::variables_map& vm, gg::GearPairInput& in) {
   exclusive(vm, "centre-distance", "x2", "x2 follows from the centre distance (give --x1 to fix the split)");
   if (given(vm, "x1")) in.x1 = number(vm, "x1");
   if (given(vm, "x2")) in.x2 = number(vm, "x2");
@@ -154,7 +159,9 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
     if (!given(vm, "x1") && it->second == gg::ShiftSplit::user_x1) fail("split", "'user' needs --x1");
     in.split = it->second;
   }
+}
 
+void read_allowances(const io::po::variables_map& vm, gg::GearPairInput& in) {
   if (given(vm, "face-width")) {
     in.face_width = length_mm(vm, "face-width");
     if (!(in.face_width >= 0.0)) fail("face-width", fmt::format("expected a width >= 0 mm, found {} mm", in.face_width));
@@ -170,7 +177,9 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
   if (given(vm, "allowance1")) in.A_sn1 = length_mm(vm, "allowance1");
   if (given(vm, "allowance2")) in.A_sn2 = length_mm(vm, "allowance2");
   if (given(vm, "centre-distance-deviation")) in.A_a = length_mm(vm, "centre-distance-deviation");
+}
 
+void read_pins(const io::po::variables_map& vm, gg::GearPairInput& in) {
   exclusive(vm, "pin-diameter", "pin-diameter1", "--pin-diameter already sets both gears");
   exclusive(vm, "pin-diameter", "pin-diameter2", "--pin-diameter already sets both gears");
   for (const char* key : {"pin-diameter", "pin-diameter1", "pin-diameter2"}) {
@@ -181,7 +190,9 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
     if (k != "pin-diameter2") in.pin_diameter1 = D;
     if (k != "pin-diameter1") in.pin_diameter2 = D;
   }
+}
 
+void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
   if (given(vm, "svg")) o.svg = text_of(vm, "svg");
   if (given(vm, "dxf")) o.dxf = text_of(vm, "dxf");
   if (given(vm, "draw")) {
@@ -191,8 +202,25 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
     }
     if (o.svg.empty() && o.dxf.empty()) fail("draw", "needs --svg or --dxf");
   }
+}
+
+}  // namespace
+
+GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
+  for (const char* key : {"z1", "z2", "module"}) {
+    if (!given(vm, key)) fail(key, "is required (or give a gear-pair file)");
+  }
+  GearCommandOptions o;
+  read_teeth_and_module(vm, o.input);
+  read_rack(vm, o.input);
+  read_shift(vm, o.input);
+  read_allowances(vm, o.input);
+  read_pins(vm, o.input);
+  read_drawing(vm, o);
   return o;
 }
+
+void read_drawing_options(const io::po::variables_map& vm, GearCommandOptions& o) { read_drawing(vm, o); }
 
 std::string option_for_field(const std::string& field) {
   static const std::map<std::string, std::string> options = {

@@ -21,6 +21,9 @@ void add_gear_options(io::po::options_description& desc);
 /// out-of-range values and contradictory combinations.
 GearCommandOptions read_gear_options(const io::po::variables_map& vm);
 
+/// Reads only --svg, --dxf and --draw (with a gear-pair file).
+void read_drawing_options(const io::po::variables_map& vm, GearCommandOptions& o);
+
 /// The command-line option that corresponds to a GearPairInput field named by GeometryError.
 std::string option_for_field(const std::string& field);
 

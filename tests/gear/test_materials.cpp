@@ -19,13 +19,19 @@ TEST(Materials, CaseCarburizedLimitsOfIso6336_5) {
 }
 
 TEST(Materials, ThroughHardenedLineIsLinearInHardness) {
-  // ISO 6336-5 Table 1, through-hardened alloy steel MQ: sigma_Hlim = 1.313 HV + 373.
+  // ISO 6336-5 Table 1, through-hardened alloy steel ME: sigma_Hlim = 2.213 HV + 260, sigma_Flim =
+  // 0.358 HV + 231 (also transcribed in waa552/fyp-website data.js); MQ: 1.313 HV + 373.
   const double a = gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::ME, 250);
   const double b = gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::ME, 300);
-  EXPECT_NEAR((b - a) / 50.0, 1.313, 1e-12);
+  EXPECT_NEAR((b - a) / 50.0, 2.213, 1e-12);
+  EXPECT_NEAR(b, 2.213 * 300 + 260, 1e-9);
+  EXPECT_NEAR(gg::sigma_Flim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::ME, 300), 0.358 * 300 + 231, 1e-9);
+  EXPECT_NEAR(gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::MQ, 300), 1.313 * 300 + 373, 1e-9);
+  // Through-hardened carbon steel ME: 0.838 HV + 432 / 0.283 HV + 202.
+  EXPECT_NEAR(gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_carbon, gg::QualityGrade::ME, 200), 0.838 * 200 + 432, 1e-9);
   // Clamped to the figure's hardness range.
   EXPECT_DOUBLE_EQ(gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::ME, 1000),
-                   gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::ME, 360));
+                   gg::sigma_Hlim_of(gg::MaterialClass::through_hardened_alloy, gg::QualityGrade::ME, 390));
 }
 
 TEST(Materials, ClassFormAndErrors) {

@@ -1,0 +1,208 @@
+#include "gear_pair_file.hpp"
+
+#include "gear_rating_options.hpp"
+
+#include <gearkit/io/yaml_model.hpp>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace gearkit::plugins::gear {
+
+namespace gg = gearkit::gear;
+
+namespace {
+
+constexpr double kRpm = 30.0 / std::numbers::pi;
+
+using io::MapReader;
+using io::Quantity;
+
+double mm(MapReader& r, const char* key, double default_mm) { return r.quantity_or(key, Quantity::length, "mm", default_mm / 1000.0) * 1000.0; }
+
+double um(MapReader& r, const char* key) { return r.quantity(key, Quantity::length, "um") * 1e6; }
+
+void read_geometry(MapReader& r, PairFile& f) {
+  gg::GearPairInput& g = f.geometry;
+  auto teeth = [&](const char* key) {
+    const long long z = r.integer(key);
+    if (z < 1 || z > 100000) io::fail_at(r.mark(key), fmt::format("expected a number of teeth 1..100000, found {}", z));
+    f.marks[key] = r.mark(key);
+    return static_cast<int>(z);
+  };
+  g.z1 = teeth("z1");
+  g.z2 = teeth("z2");
+  g.module = r.quantity("module", Quantity::length, "mm") * 1000.0;
+  g.pressure_angle = r.quantity_or("pressure_angle", Quantity::angle, "deg", g.pressure_angle);
+  g.helix_angle = r.quantity_or("helix_angle", Quantity::angle, "deg", 0.0);
+  g.internal = r.boolean_or("internal", false);
+  g.system = r.boolean_or("transverse", false) ? gg::ModuleSystem::transverse : gg::ModuleSystem::normal;
+  g.apply_tip_shortening = r.boolean_or("tip_shortening", true);
+  if (auto c = r.optional_quantity("centre_distance", Quantity::length, "mm")) g.centre_distance = *c * 1000.0;
+  g.x1 = r.optional_number("x1").value_or(0.0);
+  g.x2 = r.optional_number("x2").value_or(0.0);
+  if (g.centre_distance && r.has("x2")) io::fail_at(r.mark("x2"), "x2 follows from centre_distance (give x1 to fix the split)");
+  const std::string split = r.choice("split", {"balanced", "proportional", "user"}, r.has("x1") ? "user" : "balanced");
+  g.split = split == "user" ? gg::ShiftSplit::user_x1 : split == "proportional" ? gg::ShiftSplit::proportional : gg::ShiftSplit::balanced_sliding;
+  g.face_width = mm(r, "face_width", 0.0);
+  g.A_sn1 = mm(r, "allowance1", 0.0);
+  g.A_sn2 = mm(r, "allowance2", 0.0);
+  if (auto rack = r.optional_node("rack")) {
+    MapReader k(*rack, r.file(), "rack");
+    g.h_aP = k.optional_number("addendum").value_or(g.h_aP);
+    g.h_fP = k.optional_number("dedendum").value_or(g.h_fP);
+    g.rho_fP = k.optional_number("root_radius").value_or(g.rho_fP);
+    f.marks["rack"] = k.mark();
+    k.finish();
+  }
+  for (const char* key : {"module", "pressure_angle", "helix_angle", "centre_distance", "x1", "x2", "face_width"}) f.marks[key] = r.mark(key);
+  f.marks["A_sn1"] = r.mark("allowance1");
+  f.marks["A_sn2"] = r.mark("allowance2");
+}
+
+gg::Material read_material(const YAML::Node& node, const std::string& file, const char* what) {
+  if (node.IsScalar()) {
+    try {
+      return material_named(io::scalar_text(node, file, what));
+    } catch (const std::invalid_argument& e) {
+      io::fail_at(io::mark_of(node, file), e.what());
+    }
+  }
+  MapReader m(node, file, what);
+  gg::Material mat;
+  if (m.has("class")) {
+    const std::string spec = fmt::format("{}:{}:{}", m.string("class"), m.choice("grade", {"ML", "MQ", "ME"}, "MQ"), m.number("hardness"));
+    try {
+      mat = material_named(spec);
+    } catch (const std::invalid_argument& e) {
+      io::fail_at(m.mark("class"), e.what());
+    }
+  }
+  mat.name = m.optional_string("name").value_or(mat.name.empty() ? std::string("user-defined") : mat.name);
+  mat.sigma_Hlim = m.quantity_or("sigma_Hlim", Quantity::pressure, "MPa", mat.sigma_Hlim * 1e6) / 1e6;
+  mat.sigma_Flim = m.quantity_or("sigma_Flim", Quantity::pressure, "MPa", mat.sigma_Flim * 1e6) / 1e6;
+  mat.E = m.quantity_or("E", Quantity::pressure, "MPa", mat.E * 1e6) / 1e6;
+  mat.nu = m.optional_number("nu").value_or(mat.nu);
+  mat.HB = m.optional_number("HB").value_or(mat.HB);
+  try {
+    gg::validate(mat);
+  } catch (const std::invalid_argument& e) {
+    io::fail_at(m.mark(), e.what());
+  }
+  m.finish();
+  return mat;
+}
+
+void read_spectrum(MapReader& load, gg::RatingInput& r) {
+  if (!load.has("spectrum")) return;
+  const auto rows = load.sequence("spectrum");
+  double share_sum = 0.0;
+  bool shares = false;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    MapReader row(rows[k], load.file(), fmt::format("spectrum row {}", k + 1));
+    gg::iso6336::LoadBin bin;
+    bin.T_1 = row.quantity("torque1", Quantity::torque, "N*m");
+    bin.n_1 = row.quantity("speed1", Quantity::angular_velocity, "rpm") * kRpm;
+    if (row.has("share") == row.has("hours")) io::fail_at(row.mark(), "expected exactly one of 'hours' and 'share' in a spectrum row");
+    shares = row.has("share");
+    bin.hours = shares ? row.number("share") * r.life_h : row.quantity("hours", Quantity::time, "h") / 3600.0;
+    if (shares) share_sum += row.number("share");
+    if (!(bin.T_1 > 0.0 && bin.n_1 > 0.0 && bin.hours > 0.0)) {
+      io::fail_at(row.mark(), "expected torque1 > 0, speed1 > 0 and a positive share or hours");
+    }
+    row.finish();
+    r.spectrum.push_back(bin);
+  }
+  if (shares && std::fabs(share_sum - 1.0) > 1e-6) {
+    io::fail_at(load.mark("spectrum"), fmt::format("the shares of the spectrum rows add up to {:.6g}, expected 1", share_sum));
+  }
+}
+
+void read_load(MapReader& load, gg::RatingInput& r, PairFile& f) {
+  const std::string method = load.choice("method", {"iso6336", "agma", "lewis-hertz"}, "iso6336");
+  r.method = method == "agma" ? gg::RatingMethod::agma : method == "lewis-hertz" ? gg::RatingMethod::lewis_hertz : gg::RatingMethod::iso6336;
+  r.n_1 = load.quantity("speed1", Quantity::angular_velocity, "rpm") * kRpm;
+  if (load.has("torque1") == load.has("power")) io::fail_at(load.mark(), "expected exactly one of 'torque1' and 'power' in load");
+  r.T_1 = load.has("torque1") ? load.quantity("torque1", Quantity::torque, "N*m")
+                              : load.quantity("power", Quantity::power, "kW") / (r.n_1 / kRpm);
+  r.K_A = load.optional_number("application_factor").value_or(1.0);
+  r.life_h = load.quantity_or("life", Quantity::time, "h", r.life_h * 3600.0) / 3600.0;
+  f.marks["T_1"] = load.mark(load.has("torque1") ? "torque1" : "power");
+  f.marks["n_1"] = load.mark("speed1");
+  f.marks["K_A"] = load.mark("application_factor");
+  f.marks["life_h"] = load.mark("life");
+  f.marks["spectrum"] = load.mark("spectrum");
+  read_spectrum(load, r);
+  load.finish();
+}
+
+void read_rating_details(MapReader& r, gg::RatingInput& in, PairFile& f) {
+  if (auto q = r.optional_integer("quality")) in.quality = static_cast<int>(*q);
+  f.marks["quality"] = r.mark("quality");
+  in.nu_40 = r.optional_number("oil_viscosity").value_or(in.nu_40);
+  if (r.has("flank_roughness")) in.R_z_flank.fill(6.0 * um(r, "flank_roughness"));
+  if (r.has("root_roughness")) in.R_z_root.fill(um(r, "root_roughness"));
+  if (auto d = r.optional_node("deviations")) {
+    MapReader dv(*d, r.file(), "deviations");
+    for (auto [key, field] : {std::pair{"f_pb", &gg::RatingInput::f_pb}, {"f_falpha", &gg::RatingInput::f_falpha},
+                              {"F_betax", &gg::RatingInput::F_betax}, {"f_ma", &gg::RatingInput::f_ma},
+                              {"f_sh", &gg::RatingInput::f_sh}, {"tip_relief", &gg::RatingInput::C_a}}) {
+      if (dv.has(key)) in.*field = um(dv, key);
+      f.marks[key] = dv.mark(key);
+    }
+    dv.finish();
+  }
+  in.S_Hmin = r.optional_number("min_safety_pitting").value_or(in.S_Hmin);
+  in.S_Fmin = r.optional_number("min_safety_bending").value_or(in.S_Fmin);
+  in.limited_pitting = r.boolean_or("limited_pitting", false);
+  in.optimum_long_life = r.boolean_or("optimum_long_life", false);
+  if (auto fs = r.optional_node("factors")) {
+    MapReader fr(*fs, r.file(), "factors");
+    for (const auto& kv : *fs) {
+      const std::string name = kv.first.as<std::string>();
+      try {
+        parse_factor(fmt::format("{}={}", name, io::scalar_text(kv.second, r.file(), "factor")), in.factors);
+      } catch (const std::invalid_argument& e) {
+        io::fail_at(io::mark_of(kv.first, r.file()), e.what());
+      }
+      fr.node(name);
+    }
+    f.marks["factor"] = fr.mark();
+    fr.finish();
+  }
+}
+
+}  // namespace
+
+PairFile read_pair_file(const std::string& path) {
+  const io::YamlDocument doc = io::load_yaml_file(path);
+  MapReader r(doc.root, doc.file, "gear pair");
+  PairFile f;
+  f.file_mark = r.mark();
+  read_geometry(r, f);
+  if (auto load = r.optional_node("load")) {
+    gg::RatingInput in;
+    MapReader materials = r.map("materials");
+    in.material[0] = read_material(materials.node("gear1"), doc.file, "gear1");
+    in.material[1] = read_material(materials.node("gear2"), doc.file, "gear2");
+    f.marks["material1"] = materials.mark("gear1");
+    f.marks["material2"] = materials.mark("gear2");
+    materials.finish();
+    read_rating_details(r, in, f);
+    MapReader lr(*load, doc.file, "load");
+    in.life_h = lr.quantity_or("life", Quantity::time, "h", in.life_h * 3600.0) / 3600.0;  // before the spectrum shares
+    read_load(lr, in, f);
+    f.rating = in;
+  }
+  r.finish();
+  return f;
+}
+
+io::SourceMark mark_for_field(const PairFile& file, const std::string& field) {
+  const auto it = file.marks.find(field);
+  return it == file.marks.end() ? file.file_mark : it->second;
+}
+
+}  // namespace gearkit::plugins::gear

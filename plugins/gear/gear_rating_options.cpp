@@ -1,0 +1,275 @@
+#include "gear_rating_options.hpp"
+
+#include <gearkit/io/error.hpp>
+#include <gearkit/io/quantity.hpp>
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace gearkit::plugins::gear {
+
+namespace gg = gearkit::gear;
+
+namespace {
+
+constexpr double kRpm = 30.0 / std::numbers::pi;  // (rad/s) -> 1/min
+
+[[noreturn]] void fail(std::string_view key, std::string_view message) { io::fail_option(fmt::format("--{}", key), message); }
+
+bool given(const io::po::variables_map& vm, const char* key) { return vm.count(key) > 0; }
+
+std::string text_of(const io::po::variables_map& vm, const char* key) { return vm[key].as<std::string>(); }
+
+double quantity(const io::po::variables_map& vm, const char* key, io::Quantity q, const char* unit) {
+  try {
+    return io::parse_quantity_si(text_of(vm, key), q, unit);
+  } catch (const io::QuantityError& e) {
+    fail(key, e.what());
+  }
+}
+
+// A plain number > 0 (or >= 0 with `zero_ok`).
+double positive(const io::po::variables_map& vm, const char* key, bool zero_ok = false) {
+  const double v = quantity(vm, key, io::Quantity::dimensionless, "");
+  if (!(std::isfinite(v) && (v > 0.0 || (zero_ok && v == 0.0)))) {
+    fail(key, fmt::format("expected a number {} 0, found {}", zero_ok ? ">=" : ">", text_of(vm, key).substr(0, 60)));
+  }
+  return v;
+}
+
+int whole(const io::po::variables_map& vm, const char* key, int lo, int hi) {
+  const std::string s = text_of(vm, key);
+  int v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || ec != std::errc() || end != s.data() + s.size() || v < lo || v > hi) {
+    fail(key, fmt::format("expected a whole number {}..{}, found '{}'", lo, hi, s.substr(0, 60)));
+  }
+  return v;
+}
+
+template <class Enum>
+Enum choice(const io::po::variables_map& vm, const char* key, const std::map<std::string, Enum>& choices) {
+  const std::string s = text_of(vm, key);
+  const auto it = choices.find(s);
+  if (it == choices.end()) {
+    std::string names;
+    for (const auto& [n, e] : choices) names += fmt::format("{}{}", names.empty() ? "" : ", ", n);
+    fail(key, fmt::format("expected one of {}, found '{}'", names, s.substr(0, 60)));
+  }
+  return it->second;
+}
+
+void read_load(const io::po::variables_map& vm, gg::RatingInput& r) {
+  if (given(vm, "torque1") && given(vm, "power")) fail("power", "cannot be combined with --torque1: give one of them");
+  if (!given(vm, "speed1")) fail(given(vm, "power") ? "power" : "torque1", "the rating needs --speed1 (pinion speed, rpm)");
+  r.n_1 = quantity(vm, "speed1", io::Quantity::angular_velocity, "rpm") * kRpm;
+  if (!(r.n_1 > 0.0)) fail("speed1", fmt::format("expected a speed > 0, found {}", text_of(vm, "speed1").substr(0, 60)));
+  if (given(vm, "torque1")) {
+    r.T_1 = quantity(vm, "torque1", io::Quantity::torque, "N*m");
+    if (!(r.T_1 > 0.0)) fail("torque1", fmt::format("expected a torque > 0, found {}", text_of(vm, "torque1").substr(0, 60)));
+  } else {
+    const double P = quantity(vm, "power", io::Quantity::power, "kW");
+    if (!(P > 0.0)) fail("power", fmt::format("expected a power > 0, found {}", text_of(vm, "power").substr(0, 60)));
+    r.T_1 = P / (r.n_1 / kRpm);
+  }
+  if (given(vm, "application-factor")) r.K_A = positive(vm, "application-factor");
+  if (r.K_A < 1.0) fail("application-factor", fmt::format("expected K_A >= 1, found {}", r.K_A));
+  if (given(vm, "life")) {
+    r.life_h = quantity(vm, "life", io::Quantity::time, "h") / 3600.0;
+    if (!(r.life_h > 0.0)) fail("life", fmt::format("expected a life > 0 h, found {}", text_of(vm, "life").substr(0, 60)));
+  }
+}
+
+void read_materials(const io::po::variables_map& vm, gg::RatingInput& r) {
+  for (int i = 0; i < 2; ++i) {
+    const char* key = i == 0 ? "material1" : "material2";
+    if (!given(vm, key)) fail(key, "the rating needs both materials (a name such as 18CrNiMo7-6, or CLASS:GRADE:HARDNESS)");
+    try {
+      r.material[i] = material_named(text_of(vm, key));
+    } catch (const std::invalid_argument& e) {
+      fail(key, e.what());
+    }
+  }
+}
+
+void read_quality_and_deviations(const io::po::variables_map& vm, gg::RatingInput& r) {
+  if (given(vm, "quality")) {
+    // "6" for both gears, or "6,7": the mesh is rated with the coarser grade.
+    const std::string s = text_of(vm, "quality");
+    int worst = 0;
+    std::size_t start = 0;
+    while (start <= s.size()) {
+      const std::size_t comma = s.find(',', start);
+      const std::string part = s.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      int v = 0;
+      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+      if (part.empty() || ec != std::errc() || end != part.data() + part.size() || v < 1 || v > 11) {
+        fail("quality", fmt::format("expected an ISO 1328 grade 1..11, found '{}'", s.substr(0, 60)));
+      }
+      worst = std::max(worst, v);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    r.quality = worst;
+  }
+  const std::pair<const char*, double gg::RatingInput::*> deviations[] = {
+      {"f-pb", &gg::RatingInput::f_pb}, {"f-falpha", &gg::RatingInput::f_falpha}, {"F-betax", &gg::RatingInput::F_betax},
+      {"f-ma", &gg::RatingInput::f_ma}, {"f-sh", &gg::RatingInput::f_sh}, {"tip-relief", &gg::RatingInput::C_a}};
+  for (const auto& [key, field] : deviations) {
+    if (given(vm, key)) r.*field = positive(vm, key, true);
+  }
+}
+
+void read_surface_and_lubrication(const io::po::variables_map& vm, gg::RatingInput& r) {
+  if (given(vm, "oil-viscosity")) r.nu_40 = positive(vm, "oil-viscosity");
+  if (given(vm, "flank-roughness")) {
+    const double R_a = positive(vm, "flank-roughness");
+    r.R_z_flank = {6.0 * R_a, 6.0 * R_a};
+  }
+  if (given(vm, "root-roughness")) {
+    const double R_z = positive(vm, "root-roughness", true);
+    r.R_z_root = {R_z, R_z};
+  }
+  if (given(vm, "rim1")) r.s_R[0] = positive(vm, "rim1");
+  if (given(vm, "rim2")) r.s_R[1] = positive(vm, "rim2");
+  if (given(vm, "min-safety-pitting")) r.S_Hmin = positive(vm, "min-safety-pitting");
+  if (given(vm, "min-safety-bending")) r.S_Fmin = positive(vm, "min-safety-bending");
+  r.limited_pitting = vm["limited-pitting"].as<bool>();
+  r.optimum_long_life = vm["optimum-long-life"].as<bool>();
+  if (given(vm, "root-shift")) {
+    r.root_shift = choice<gg::RootShift>(vm, "root-shift", {{"generating", gg::RootShift::generating}, {"nominal", gg::RootShift::nominal}});
+  }
+}
+
+void read_method_options(const io::po::variables_map& vm, gg::RatingInput& r) {
+  if (given(vm, "method")) {
+    r.method = choice<gg::RatingMethod>(vm, "method", {{"iso6336", gg::RatingMethod::iso6336}, {"agma", gg::RatingMethod::agma},
+                                                       {"lewis-hertz", gg::RatingMethod::lewis_hertz}});
+  }
+  if (given(vm, "agma-quality")) r.Q_v = whole(vm, "agma-quality", 3, 16);
+  if (given(vm, "reliability")) {
+    r.reliability = positive(vm, "reliability");
+    if (!(r.reliability > 0.5 && r.reliability < 1.0)) fail("reliability", fmt::format("expected 0.5 < R < 1, found {}", r.reliability));
+  }
+  if (given(vm, "mounting")) {
+    r.agma_mounting = choice<gg::AgmaMounting>(vm, "mounting", {{"open", gg::AgmaMounting::open}, {"commercial", gg::AgmaMounting::commercial},
+                                                               {"precision", gg::AgmaMounting::precision},
+                                                               {"extra-precision", gg::AgmaMounting::extra_precision}});
+  }
+  r.agma_crowned = vm["crowned"].as<bool>();
+  if (given(vm, "lewis-profile")) {
+    r.lewis_profile = choice<gg::LewisProfile>(vm, "lewis-profile", {{"cast", gg::LewisProfile::cast}, {"cut", gg::LewisProfile::cut},
+                                                                     {"hobbed", gg::LewisProfile::hobbed}, {"ground", gg::LewisProfile::ground}});
+  }
+  if (given(vm, "factor")) {
+    for (const std::string& f : vm["factor"].as<std::vector<std::string>>()) {
+      try {
+        parse_factor(f, r.factors);
+      } catch (const std::invalid_argument& e) {
+        fail("factor", e.what());
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void add_rating_options(io::po::options_description& desc) {
+  namespace po = io::po;
+  auto text = [] { return po::value<std::string>(); };
+  desc.add_options()
+      ("torque1", text()->value_name("TORQUE"), "rating: torque on gear 1, N*m (or with a unit: 9 kN*m)")
+      ("power", text()->value_name("POWER"), "rating: transmitted power, kW (instead of --torque1)")
+      ("speed1", text()->value_name("SPEED"), "rating: speed of gear 1, rpm")
+      ("material1", text()->value_name("NAME"), "rating: material of gear 1 (18CrNiMo7-6, 42CrMo4, ..., or CLASS:GRADE:HARDNESS)")
+      ("material2", text()->value_name("NAME"), "rating: material of gear 2")
+      ("method", text()->value_name("iso6336|agma|lewis-hertz"), "rating method (default iso6336)")
+      ("application-factor", text()->value_name("K_A"), "application factor K_A (default 1)")
+      ("life", text()->value_name("TIME"), "required life, h (default 20000 h)")
+      ("oil-viscosity", text()->value_name("NU40"), "kinematic viscosity at 40 C, mm^2/s (default 220)")
+      ("flank-roughness", text()->value_name("RA"), "flank roughness R_a, um (default 0.5: R_z = 3)")
+      ("root-roughness", text()->value_name("RZ"), "root roughness R_z, um (default 10)")
+      ("f-pb", text()->value_name("UM"), "transverse base pitch deviation f_pb, um (default from --quality)")
+      ("f-falpha", text()->value_name("UM"), "profile form deviation f_falpha, um (default from --quality)")
+      ("F-betax", text()->value_name("UM"), "initial equivalent misalignment F_betax, um (instead of f_ma, f_sh)")
+      ("f-ma", text()->value_name("UM"), "mesh misalignment from manufacturing f_ma, um (default f_HbetaT of --quality)")
+      ("f-sh", text()->value_name("UM"), "misalignment from shaft deflection f_sh, um (default ISO 6336-1 Eq. 43)")
+      ("tip-relief", text()->value_name("UM"), "tip relief C_a, um (default: by running-in)")
+      ("rim1", text()->value_name("LEN"), "rim thickness of gear 1, mm (default solid)")
+      ("rim2", text()->value_name("LEN"), "rim thickness of gear 2, mm (default solid)")
+      ("min-safety-pitting", text()->value_name("S"), "required S_Hmin (default 1.0)")
+      ("min-safety-bending", text()->value_name("S"), "required S_Fmin (default 1.4)")
+      ("limited-pitting", po::bool_switch(), "Z_NT line with limited pitting permitted")
+      ("optimum-long-life", po::bool_switch(), "Z_NT = Y_NT = 1 at 1e10 cycles (optimum conditions) instead of 0.85")
+      ("root-shift", text()->value_name("generating|nominal"), "profile shift for Y_F, Y_S (default generating: with the allowance)")
+      ("agma-quality", text()->value_name("QV"), "AGMA quality number Q_v (default 17 - ISO grade)")
+      ("reliability", text()->value_name("R"), "AGMA reliability (default 0.99)")
+      ("mounting", text()->value_name("open|commercial|precision|extra-precision"), "AGMA gearing condition (default commercial)")
+      ("crowned", po::bool_switch(), "AGMA: crowned teeth (C_mc = 0.8)")
+      ("lewis-profile", text()->value_name("cast|cut|hobbed|ground"), "Lewis: tooth manufacture for the Barth factor (default hobbed)")
+      ("factor", po::value<std::vector<std::string>>()->composing()->value_name("NAME=VALUE"),
+       "impose a factor (K_v, K_Hbeta, Z_NT1, Y_F, J1, ...), repeatable");
+  if (!desc.find_nothrow("quality", false)) {
+    desc.add_options()("quality", text()->value_name("GRADE[,GRADE]"), "ISO 1328-1 flank tolerance class 1..11 (both gears, or gear 1,gear 2)");
+  }
+}
+
+bool rating_requested(const io::po::variables_map& vm) { return given(vm, "torque1") || given(vm, "power"); }
+
+bool any_rating_option(const io::po::variables_map& vm) {
+  for (const char* key : {"torque1", "power", "speed1", "material1", "material2", "method", "application-factor", "life",
+                          "oil-viscosity", "flank-roughness", "root-roughness", "f-pb", "f-falpha", "F-betax", "f-ma", "f-sh",
+                          "tip-relief", "rim1", "rim2", "min-safety-pitting", "min-safety-bending", "root-shift", "agma-quality",
+                          "reliability", "mounting", "lewis-profile", "factor"}) {
+    if (given(vm, key)) return true;
+  }
+  return vm["limited-pitting"].as<bool>() || vm["optimum-long-life"].as<bool>() || vm["crowned"].as<bool>();
+}
+
+gg::RatingInput read_rating_options(const io::po::variables_map& vm) {
+  gg::RatingInput r;
+  read_load(vm, r);
+  read_materials(vm, r);
+  read_quality_and_deviations(vm, r);
+  read_surface_and_lubrication(vm, r);
+  read_method_options(vm, r);
+  return r;
+}
+
+void parse_factor(std::string_view text, gg::ImposedFactors& factors) {
+  const auto eq = text.find('=');
+  if (eq == std::string_view::npos) {
+    throw std::invalid_argument(fmt::format("expected NAME=VALUE, found '{}'", text.substr(0, 60)));
+  }
+  const std::string_view name = text.substr(0, eq), value = text.substr(eq + 1);
+  const auto which = gg::factors_named(name);
+  if (which.empty()) {
+    throw std::invalid_argument(fmt::format("unknown factor '{}'; expected one of {}", name.substr(0, 60), gg::factor_names()));
+  }
+  double v = 0;
+  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+  if (value.empty() || ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v) || !(v > 0.0)) {
+    throw std::invalid_argument(fmt::format("expected a number > 0 for {}, found '{}'", name, value.substr(0, 60)));
+  }
+  for (gg::Factor f : which) factors.set(f, v);
+}
+
+std::string option_for_rating_field(const std::string& field) {
+  static const std::map<std::string, std::string> options = {
+      {"T_1", "torque1"}, {"n_1", "speed1"}, {"K_A", "application-factor"}, {"quality", "quality"}, {"life_h", "life"},
+      {"nu_40", "oil-viscosity"}, {"S_Hmin", "min-safety-pitting"}, {"S_Fmin", "min-safety-bending"},
+      {"material1", "material1"}, {"material2", "material2"}, {"f_pb", "f-pb"}, {"f_falpha", "f-falpha"},
+      {"f_ma", "f-ma"}, {"F_betax", "F-betax"}, {"face_width", "face-width"}, {"Q_v", "agma-quality"},
+      {"reliability", "reliability"}, {"factor", "factor"}, {"R_z_flank", "flank-roughness"}, {"R_z_root", "root-roughness"},
+      {"s_R", "rim1"}, {"tooth_root", "x1"}, {"spectrum", "life"}};
+  const auto it = options.find(field);
+  return it == options.end() ? field : it->second;
+}
+
+gg::Material material_named(std::string_view name) { return gg::material_by_name(name); }
+
+}  // namespace gearkit::plugins::gear

@@ -1,0 +1,179 @@
+// CLI tests of the load-capacity part of `gearkit gear` (plugins/gear/gear_rating_*.cpp,
+// gear_pair_file.cpp, gear_size.cpp), run through GEARKIT_EXE.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / ("gearkit-rating-test-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+CliRun run(const std::string& args) {
+  const fs::path out = scratch() / "out.txt", err = scratch() / "err.txt";
+  const std::string cmd = std::string("'") + GEARKIT_EXE + "' gear " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  CliRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream o(out), e(err);
+  std::stringstream so, se;
+  so << o.rdbuf();
+  se << e.rdbuf();
+  r.out = so.str();
+  r.err = se.str();
+  return r;
+}
+
+std::string write(const std::string& name, const std::string& text) {
+  const fs::path p = scratch() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+const std::string kExample1 = std::string(GEARKIT_SOURCE_DIR) + "/examples/gears/iso_tr_6336_30_example1.yaml";
+const std::string kLoad = " --torque1 9kN*m --speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 ";
+const std::string kPair = "--z1 17 --z2 103 --module 8 --helix-angle 15.8 --centre-distance 500 --x1 0.145 --face-width 100 "
+                          "--dedendum 1.4 --root-radius 0.39";
+
+void expect_error(const CliRun& r, const std::string& where) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(r.err.rfind("gearkit: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+}
+
+}  // namespace
+
+TEST(GearRatingCli, PairFileReproducesIsoTr6336_30Example1) {
+  // ISO/TR 6336-30 example 1 (values as in tests/gear/test_rating.cpp).
+  const CliRun r = run("'" + kExample1 + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  const auto j = nlohmann::json::parse(r.out)["rating"];
+  EXPECT_EQ(j["method"], "iso6336");
+  EXPECT_NEAR(j["F_t_N"].get<double>(), 127352.0, 1.0);
+  EXPECT_NEAR(j["Z_H"].get<double>(), 2.39533, 0.0001);
+  EXPECT_NEAR(j["factors"]["K_Fbeta"].get<double>(), 1.12803, 0.001);
+  EXPECT_EQ(j["factors"]["imposed"], nlohmann::json::array({"K_Hbeta"}));
+  EXPECT_NEAR(j["gears"][0]["sigma_HP_MPa"].get<double>(), 1338.48, 0.05);
+  EXPECT_NEAR(j["gears"][0]["S_H"].get<double>(), 1.0285, 0.001);
+  EXPECT_NEAR(j["gears"][1]["S_H"].get<double>(), 1.0870, 0.001);
+  EXPECT_NEAR(j["gears"][0]["Z_NT"].get<double>(), 0.910, 0.0005);
+}
+
+TEST(GearRatingCli, OptionsGiveTheSameRatingAsTheFile) {
+  const CliRun file = run("'" + kExample1 + "' --format json");
+  const CliRun opts = run(kPair + kLoad + "--quality 5 --life 50000 --oil-viscosity 320 --flank-roughness 1 --tip-relief 70 "
+                          "--min-safety-bending 1 --factor K_Hbeta=1.16 --format json");
+  ASSERT_EQ(opts.status, 0) << opts.err;
+  const auto a = nlohmann::json::parse(file.out)["rating"], b = nlohmann::json::parse(opts.out)["rating"];
+  for (int i = 0; i < 2; ++i) {
+    for (const char* k : {"S_H", "S_F", "Y_F", "Y_S", "sigma_F_MPa"}) {
+      EXPECT_DOUBLE_EQ(a["gears"][i][k].get<double>(), b["gears"][i][k].get<double>()) << k;
+    }
+  }
+}
+
+TEST(GearRatingCli, MethodsShareTheOutputShape) {
+  for (const char* method : {"agma --agma-quality 8", "lewis-hertz"}) {
+    const CliRun r = run(kPair + kLoad + "--method " + method + " --format json");
+    ASSERT_EQ(r.status, 0) << method << r.err;
+    const auto j = nlohmann::json::parse(r.out)["rating"];
+    for (int i = 0; i < 2; ++i) {
+      for (const char* k : {"sigma_H_MPa", "sigma_HP_MPa", "S_H", "sigma_F_MPa", "sigma_FP_MPa", "S_F"}) {
+        EXPECT_TRUE(j["gears"][i].contains(k)) << method << " " << k;
+      }
+    }
+  }
+}
+
+TEST(GearRatingCli, SafetyBelowTheMinimumIsAWarningNotAnError) {
+  const CliRun r = run(kPair + kLoad + "--quality 5 --min-safety-pitting 1.3");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("gear 1: pitting safety S_H"), std::string::npos);
+  EXPECT_EQ(run(kPair + kLoad + "--quality 5 --min-safety-pitting 1.3 --strict").status, 3);
+}
+
+TEST(GearRatingCli, BadInputNamesTheOption) {
+  expect_error(run(kPair + " --torque1 9000 --speed1 360 --material1 18CrNiMo7-6 --material2 unobtainium"), "'--material2'");
+  expect_error(run(kPair + kLoad + "--quality 12"), "'--quality'");
+  expect_error(run(kPair + kLoad + "--quality 6 --life -5h"), "'--life'");
+  expect_error(run(kPair + kLoad + "--quality 6 --factor K_xyz=2"), "'--factor'");
+  expect_error(run(kPair + kLoad + "--quality 6 --factor K_v=-1"), "'--factor'");
+  expect_error(run(kPair + kLoad), "'--f-pb'");  // no grade, no deviations: K_v cannot be computed
+  expect_error(run(kPair + " --material1 18CrNiMo7-6"), "'--torque1'");
+  expect_error(run("--z1 17 --z2 50 --module 3" + kLoad + "--quality 6"), "'--face-width'");
+}
+
+TEST(GearRatingCli, BadPairFilesNameTheLine) {
+  const std::string spectrum = write("bad_spectrum.yaml",
+                                     "z1: 20\nz2: 60\nmodule: 3\nface_width: 30\nmaterials: {gear1: 42CrMo4, gear2: 42CrMo4}\n"
+                                     "quality: 6\nload:\n  torque1: 100\n  speed1: 1000\n  spectrum:\n"
+                                     "    - {torque1: 100, speed1: 1000, share: 0.5}\n    - {torque1: 50, speed1: 1000, share: 0.3}\n");
+  expect_error(run("'" + spectrum + "'"), "bad_spectrum.yaml:11:");
+  const std::string material = write("bad_material.yaml",
+                                     "z1: 20\nz2: 60\nmodule: 3\nface_width: 30\nmaterials: {gear1: 42CrMo4, gear2: wood}\n"
+                                     "load: {torque1: 100, speed1: 1000}\n");
+  expect_error(run("'" + material + "'"), "bad_material.yaml:5:");
+  const std::string life = write("bad_life.yaml",
+                                 "z1: 20\nz2: 60\nmodule: 3\nface_width: 30\nmaterials: {gear1: 42CrMo4, gear2: 42CrMo4}\n"
+                                 "quality: 6\nload: {torque1: 100, speed1: 1000, life: -3 h}\n");
+  expect_error(run("'" + life + "'"), "bad_life.yaml:7:");
+  expect_error(run("'" + kExample1 + "' --z1 20"), "'--z1'");
+}
+
+TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
+  const CliRun r = run("size --ratio 3.5 --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
+                       "--quality 6 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto c = nlohmann::json::parse(r.out)["sizing"]["candidates"];
+  ASSERT_FALSE(c.empty());
+  double previous = 0.0;
+  for (const auto& k : c) {
+    EXPECT_GE(k["S_H"].get<double>(), 1.0);
+    EXPECT_GE(k["S_F"].get<double>(), 1.4);
+    EXPECT_GE(k["volume_mm3"].get<double>(), previous);
+    previous = k["volume_mm3"].get<double>();
+  }
+  // The best candidate rated again by `gearkit gear` is safe, and 1 mm narrower it is not.
+  const auto& best = c[0];
+  auto rate = [&](double b) {
+    const std::string args = "--z1 " + std::to_string(best["z1"].get<int>()) + " --z2 " + std::to_string(best["z2"].get<int>()) +
+                             " --module " + std::to_string(best["m_n_mm"].get<double>()) + " --x1 " + std::to_string(best["x1"].get<double>()) +
+                             " --x2 " + std::to_string(best["x2"].get<double>()) + " --face-width " + std::to_string(b) +
+                             " --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --quality 6 --format json";
+    const CliRun g = run(args);
+    EXPECT_EQ(g.status, 0) << g.err;
+    const auto gears = nlohmann::json::parse(g.out)["rating"]["gears"];
+    return std::min({gears[0]["S_H"].get<double>() / 1.0, gears[1]["S_H"].get<double>() / 1.0, gears[0]["S_F"].get<double>() / 1.4,
+                     gears[1]["S_F"].get<double>() / 1.4});
+  };
+  EXPECT_GE(rate(best["b_mm"].get<double>()), 1.0);
+  EXPECT_LT(rate(best["b_mm"].get<double>() - 1.0), 1.0);
+}
+
+TEST(GearSizeCli, BadInput) {
+  expect_error(run("size --torque1 500 --speed1 1450 --material1 C45 --material2 C45"), "'--ratio'");
+  expect_error(run("size --ratio 0.5 --torque1 500 --speed1 1450 --material1 C45 --material2 C45"), "'--ratio'");
+  expect_error(run("size --ratio 3 --torque1 500 --speed1 1450 --material1 C45 --material2 C45 --z1-min 5 --z1-max 500 --shifts "
+                   "0,0.1,0.2,0.3,0.4,0.5"),
+               "'--modules'");
+}
