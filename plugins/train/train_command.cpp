@@ -5,6 +5,7 @@
 #include "train_centre_distance.hpp"
 #include "train_conditions.hpp"
 #include "train_file.hpp"
+#include "train_rating.hpp"
 #include "train_synth_command.hpp"
 
 #include <gearkit/io/command_line.hpp>
@@ -373,6 +374,7 @@ int run_train_command(kin::CommandContext& context) {
       ("torque", po::value<std::string>()->value_name("MEMBER=TORQUE"),
        "a torque applied to MEMBER (N*m by default); the others follow from equilibrium")
       ("power", po::value<std::string>()->value_name("MEMBER=POWER"), "power fed to MEMBER (W by default)")
+      ("rate", po::bool_switch(), "load capacity of every mesh (docs/rating.md; face widths and materials in the file)")
       ("mesh-efficiency", po::value<double>()->value_name("ETA"),
        "basic efficiency eta_0 of the meshes without their own 'efficiency' (default 1)")
       ("modes", "ratio w_out/w_in with each other member held fixed in turn, and with pairs coupled")
@@ -462,7 +464,13 @@ int run_train_command(kin::CommandContext& context) {
         value /= omega;
       }
       add_torques(report, model, solution, conditions, w, *output, member, value);
+      if (vm["rate"].as<bool>()) {
+        if (!speeds_rad_s) io::fail_option("--rate", "needs the input speeds (--input MEMBER=SPEED)");
+        add_mesh_ratings(report, vm["file"].as<std::string>(), model, solution, conditions.list, w, *output, member, value);
+      }
     }
+  } else if (vm["rate"].as<bool>()) {
+    io::fail_option("--rate", "needs the load: --torque MEMBER=TORQUE or --power MEMBER=POWER");
   }
 
   double tolerance_mm = 1e-3;

@@ -86,6 +86,8 @@ void read_gears(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldM
     if (const auto x = r.optional_number("x")) spec.x = *x;
     spec.alpha_n = r.quantity_or("pressure_angle", io::Quantity::angle, "deg", defaults.alpha_n);
     spec.beta = r.quantity_or("helix_angle", io::Quantity::angle, "deg", defaults.beta);
+    r.optional_node("face_width");  // read by `train --rate` (train_rating.cpp)
+    r.optional_node("material");
     r.finish();
     FieldMarks gear_marks = marks_of(r, {"name", "member", "z", "module"});
     // A bad inherited angle is placed at the top-level key it came from.
@@ -153,6 +155,7 @@ TrainFile load_train_file(const std::string& path, double default_efficiency) {
   read_gears(root, d, gear_marks);
   read_meshes(root, d, mesh_marks, default_efficiency);
   FileAnalysis analysis = read_analysis(root);
+  root.optional_node("rating");  // read by `train --rate` (train_rating.cpp)
   root.finish();
   try {
     return TrainFile{gt::make_train_model(d), std::move(analysis)};

@@ -1,0 +1,272 @@
+#include "train_rating.hpp"
+
+#include "../gear/gear_rating_report.hpp"
+
+#include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/gear/rating.hpp>
+#include <gearkit/io/error.hpp>
+#include <gearkit/io/yaml_model.hpp>
+#include <gearkit/train/rational.hpp>
+#include <gearkit/train/torques.hpp>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <tuple>
+
+namespace gearkit::plugins::train {
+
+namespace gg = gearkit::gear;
+namespace gt = gearkit::train;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct GearData {
+  double face_width_mm = kNaN;
+  std::optional<gg::Material> material;
+  io::SourceMark mark;
+};
+
+// The `rating:` section and the gears' `face_width` / `material`.
+struct RatingData {
+  gg::RatingInput base;
+  double face_width_mm = kNaN;
+  std::optional<gg::Material> material;
+  std::optional<double> K_gamma;
+  io::SourceMark mark;
+  std::map<std::string, GearData> gears;
+};
+
+gg::Material material_at(const YAML::Node& node, const std::string& file) {
+  try {
+    return gg::material_by_name(io::scalar_text(node, file, "material"));
+  } catch (const std::invalid_argument& e) {
+    io::fail_at(io::mark_of(node, file), e.what());
+  }
+}
+
+void read_section(io::MapReader& r, RatingData& d) {
+  const std::string method = r.choice("method", {"iso6336", "agma", "lewis-hertz"}, "iso6336");
+  d.base.method = method == "agma" ? gg::RatingMethod::agma : method == "lewis-hertz" ? gg::RatingMethod::lewis_hertz
+                                                                                      : gg::RatingMethod::iso6336;
+  d.base.life_h = r.quantity_or("life", io::Quantity::time, "h", d.base.life_h * 3600.0) / 3600.0;
+  if (auto q = r.optional_integer("quality")) d.base.quality = static_cast<int>(*q);
+  d.base.K_A = r.optional_number("application_factor").value_or(1.0);
+  d.K_gamma = r.optional_number("load_sharing");
+  d.base.nu_40 = r.optional_number("oil_viscosity").value_or(d.base.nu_40);
+  if (r.has("flank_roughness")) d.base.R_z_flank.fill(6.0e6 * r.quantity("flank_roughness", io::Quantity::length, "um"));
+  if (r.has("root_roughness")) d.base.R_z_root.fill(1.0e6 * r.quantity("root_roughness", io::Quantity::length, "um"));
+  d.base.S_Hmin = r.optional_number("min_safety_pitting").value_or(d.base.S_Hmin);
+  d.base.S_Fmin = r.optional_number("min_safety_bending").value_or(d.base.S_Fmin);
+  if (auto w = r.optional_quantity("face_width", io::Quantity::length, "mm")) d.face_width_mm = *w * 1000.0;
+  if (auto m = r.optional_node("material")) d.material = material_at(*m, r.file());
+  d.mark = r.mark();
+  r.finish();
+}
+
+RatingData read_rating_data(const std::string& path) {
+  const io::YamlDocument doc = io::load_yaml_file(path);
+  RatingData d;
+  d.mark = io::mark_of(doc.root, doc.file);
+  if (const YAML::Node section = doc.root["rating"]) {
+    io::MapReader r(section, doc.file, "rating");
+    read_section(r, d);
+  }
+  for (const YAML::Node& item : doc.root["gears"]) {
+    GearData g;
+    g.mark = io::mark_of(item, doc.file);
+    if (const YAML::Node w = item["face_width"]) g.face_width_mm = io::scalar_quantity(w, doc.file, io::Quantity::length, "mm") * 1000.0;
+    if (const YAML::Node m = item["material"]) g.material = material_at(m, doc.file);
+    d.gears[item["name"].as<std::string>()] = g;
+  }
+  return d;
+}
+
+// Load sharing of planets K_gamma by their number (IEC 61400-4 Table 3 values, as the Drivetrain
+// ISO 6336 code uses them): 1 for one to three... planets on a floating member are not assumed.
+double default_K_gamma(int planets) {
+  switch (planets) {
+    case 1:
+    case 2: return 1.0;
+    case 3: return 1.1;
+    case 4: return 1.25;
+    case 5: return 1.35;
+    case 6: return 1.44;
+    default: return 1.47;
+  }
+}
+
+struct MeshPlan {
+  gt::GearId pinion = 0, wheel = 0;
+  int planets = 1;  // planets sharing the mesh torque
+};
+
+MeshPlan plan_of(const gt::TrainModel& model, const gt::Mesh& mesh) {
+  const gt::Gear& a = model.gear(mesh.gear_a);
+  const gt::Gear& b = model.gear(mesh.gear_b);
+  MeshPlan p;
+  const bool a_is_pinion = b.kind == gt::GearKind::internal || (a.kind != gt::GearKind::internal && a.z <= b.z);
+  p.pinion = a_is_pinion ? mesh.gear_a : mesh.gear_b;
+  p.wheel = a_is_pinion ? mesh.gear_b : mesh.gear_a;
+  for (gt::GearId g : {mesh.gear_a, mesh.gear_b}) {
+    if (model.is_planet(model.gear(g).member)) p.planets = model.member(model.gear(g).member).planet_count;
+  }
+  return p;
+}
+
+const GearData& gear_data(const RatingData& d, const gt::Gear& g) {
+  static const GearData none;
+  const auto it = d.gears.find(g.name);
+  return it == d.gears.end() ? none : it->second;
+}
+
+gg::GearPairInput pair_of(const gt::TrainModel& model, const RatingData& d, const MeshPlan& p) {
+  const gt::Gear& g1 = model.gear(p.pinion);
+  const gt::Gear& g2 = model.gear(p.wheel);
+  for (const gt::Gear* g : {&g1, &g2}) {
+    if (!g->module_mm) io::fail_at(gear_data(d, *g).mark, fmt::format("gear '{}': the rating needs its module", g->name));
+  }
+  gg::GearPairInput in;
+  in.z1 = g1.z;
+  in.z2 = g2.z;
+  in.internal = g2.kind == gt::GearKind::internal;
+  in.module = *g1.module_mm;
+  in.pressure_angle = g1.alpha_n;
+  in.helix_angle = std::fabs(g1.beta);
+  in.x1 = g1.x;
+  in.x2 = g2.x;
+  double b = kNaN;
+  for (const gt::Gear* g : {&g1, &g2}) {
+    const double w = std::isnan(gear_data(d, *g).face_width_mm) ? d.face_width_mm : gear_data(d, *g).face_width_mm;
+    if (std::isnan(w)) io::fail_at(gear_data(d, *g).mark, fmt::format("gear '{}': the rating needs its face_width", g->name));
+    b = std::isnan(b) ? w : std::min(b, w);
+  }
+  in.face_width = b;
+  return in;
+}
+
+gg::Material material_of(const RatingData& d, const gt::Gear& g) {
+  const GearData& gd = gear_data(d, g);
+  if (gd.material) return *gd.material;
+  if (d.material) return *d.material;
+  io::fail_at(gd.mark, fmt::format("gear '{}': the rating needs its material (or rating: material:)", g.name));
+}
+
+int meshes_of(const gt::TrainModel& model, gt::GearId g) {
+  int n = 0;
+  for (const auto& m : model.meshes()) n += (m.gear_a == g || m.gear_b == g) ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
+namespace {
+
+struct MeshRating {
+  std::string mesh, pinion, wheel;
+  gg::RatingInput input;
+  gg::PairRating rating;
+};
+
+// One mesh: its pair, torques per planet, relative speed, cycles per turn and load sharing.
+std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingData& d, gt::MeshId k, double T_pinion_total,
+                                    double n_pinion_rpm, std::vector<std::string>& warnings) {
+  const gt::Mesh& mesh = model.mesh(k);
+  const MeshPlan p = plan_of(model, mesh);
+  const gt::Gear& g1 = model.gear(p.pinion);
+  const gt::Gear& g2 = model.gear(p.wheel);
+  if (n_pinion_rpm == 0.0 || T_pinion_total == 0.0) {
+    warnings.push_back(fmt::format("mesh '{}' carries no load or does not turn relative to its carrier: not rated", mesh.name));
+    return std::nullopt;
+  }
+  MeshRating m{mesh.name, g1.name, g2.name, d.base, {}};
+  gg::RatingInput& in = m.input;
+  in.T_1 = T_pinion_total / p.planets;
+  in.n_1 = n_pinion_rpm;
+  in.material = {material_of(d, g1), material_of(d, g2)};
+  in.K_gamma = p.planets > 1 ? d.K_gamma.value_or(default_K_gamma(p.planets)) : 1.0;
+  // A gear on a planet meets this mesh once per relative turn; a gear on the carrier's axis meets
+  // every planet: N cycles per relative turn.
+  in.cycles_per_rev = {model.is_planet(g1.member) ? 1.0 : p.planets, model.is_planet(g2.member) ? 1.0 : p.planets};
+  in.reversed_bending = {meshes_of(model, p.pinion) > 1, meshes_of(model, p.wheel) > 1};
+  const gg::GearPairInput pair = pair_of(model, d, p);
+  try {
+    m.rating = gg::rate_gear_pair(pair, gg::compute_gear_pair(pair), in);
+  } catch (const gg::GeometryError& e) {
+    io::fail_at(gear_data(d, g1).mark, fmt::format("mesh '{}': {}", mesh.name, e.what()));
+  } catch (const gg::RatingError& e) {
+    io::fail_at(d.mark, fmt::format("mesh '{}': {} ({})", mesh.name, e.what(), e.field()));
+  }
+  return m;
+}
+
+void report_meshes(io::Report& report, const std::vector<MeshRating>& rated) {
+  io::Table t{"Load capacity of the meshes (per planet where planets share a mesh)",
+              {"mesh", "gear", "T [N m]", "n rel. carrier [1/min]", "K_gamma", "S_H", "S_F", "life [h]"}, {}};
+  nlohmann::json list = nlohmann::json::array();
+  double weakest = std::numeric_limits<double>::infinity();
+  std::string weakest_text;
+  for (const auto& m : rated) {
+    for (int i = 0; i < 2; ++i) {
+      const auto& g = m.rating.gear[i];
+      const double life = std::min(g.life_H_h, g.life_F_h);
+      t.add_row({m.mesh, i == 0 ? m.pinion : m.wheel, io::fixed(i == 0 ? m.input.T_1 : m.input.T_1 * m.rating.gear[0].n / g.n, 2),
+                 io::fixed(g.n, 2), io::fixed(m.input.K_gamma, 3), io::fixed(g.S_H, 3), io::fixed(g.S_F, 3),
+                 std::isfinite(life) ? io::fixed(life, 0) : "unlimited"});
+      for (auto [what, S, S_min] : {std::tuple{"pitting", g.S_H, m.input.S_Hmin}, {"tooth root", g.S_F, m.input.S_Fmin}}) {
+        if (S / S_min < weakest) {
+          weakest = S / S_min;
+          weakest_text = fmt::format("mesh '{}', gear '{}', {}: S = {:.3f} (required {:.2f})", m.mesh, i == 0 ? m.pinion : m.wheel,
+                                     what, S, S_min);
+        }
+      }
+    }
+    nlohmann::json j = plugins::gear::rating_json(m.input, m.rating);
+    j["mesh"] = m.mesh;
+    j["gear_names"] = {m.pinion, m.wheel};
+    j["K_gamma"] = m.input.K_gamma;
+    list.push_back(j);
+    for (const auto& w : m.rating.warnings) report.warnings.push_back(fmt::format("mesh '{}': {}", m.mesh, w));
+  }
+  report.tables.push_back(std::move(t));
+  if (!weakest_text.empty()) report.notes.push_back("Weakest: " + weakest_text + ".");
+  report.json["rating"] = {{"meshes", list}, {"weakest", weakest_text}};
+}
+
+}  // namespace
+
+void add_mesh_ratings(io::Report& report, const std::string& file, const gt::TrainModel& model, const gt::SpeedSolution& speeds,
+                      const std::vector<gt::Condition>& conditions, const std::vector<double>& input_speeds_rad_s,
+                      gt::MemberId output, gt::MemberId given_member, double given_torque_Nm) {
+  const RatingData d = read_rating_data(file);
+  const gt::TorqueSolution ts = gt::solve_torques(model, conditions, output, given_member);
+  if (!ts.balanced) {
+    report.warnings.push_back("no mesh rating: " + ts.message);
+    return;
+  }
+  std::vector<MeshRating> rated;
+  for (gt::MeshId k = 0; k < model.meshes().size(); ++k) {
+    const gt::Mesh& mesh = model.mesh(k);
+    if (!ts.mesh_multiplier[k]) {
+      report.warnings.push_back(fmt::format("mesh '{}': torque statically indeterminate, not rated", mesh.name));
+      continue;
+    }
+    const auto [T_a, T_b] = gt::mesh_gear_torques(model, k, *ts.mesh_multiplier[k], gt::MeshDriver::none);
+    const MeshPlan p = plan_of(model, mesh);
+    const double T_pinion = std::fabs(gt::to_double(p.pinion == mesh.gear_a ? T_a : T_b)) * given_torque_Nm;
+    const double w = gt::speed_value(speeds, model.gear(p.pinion).member, input_speeds_rad_s) -
+                     gt::speed_value(speeds, mesh.carrier, input_speeds_rad_s);
+    if (auto m = rate_mesh(model, d, k, std::fabs(T_pinion), std::fabs(w) * 30.0 / std::numbers::pi, report.warnings)) {
+      rated.push_back(std::move(*m));
+    }
+  }
+  report_meshes(report, rated);
+}
+
+}  // namespace gearkit::plugins::train

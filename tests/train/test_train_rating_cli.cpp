@@ -1,0 +1,94 @@
+// CLI tests of `gearkit train FILE --torque ... --rate` (plugins/train/train_rating.cpp).
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+CliRun run(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path() / ("gearkit-train-rating-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path out = dir / "out.txt", err = dir / "err.txt";
+  const std::string cmd = std::string("'") + GEARKIT_EXE + "' train " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  CliRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream o(out), e(err);
+  std::stringstream so, se;
+  so << o.rdbuf();
+  se << e.rdbuf();
+  r.out = so.str();
+  r.err = se.str();
+  return r;
+}
+
+const std::string kFile = std::string(GEARKIT_SOURCE_DIR) + "/examples/trains/rated_planetary.yaml";
+
+}  // namespace
+
+TEST(TrainRating, EveryMeshFromTheTrainsTorquesAndSpeeds) {
+  const CliRun r = run("'" + kFile + "' --torque sun=40 --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto meshes = nlohmann::json::parse(r.out)["rating"]["meshes"];
+  ASSERT_EQ(meshes.size(), 2u);
+  const auto& sun = meshes[0];
+  const auto& ring = meshes[1];
+  // Sun mesh: each of 3 planets carries 40/3 N m of the sun; the sun turns at 1000 - 1000/i
+  // relative to the carrier, i = 1 + 108/21 (fixed ring).
+  const double i = 1.0 + 108.0 / 21.0;
+  EXPECT_NEAR(sun["T_1_Nm"].get<double>(), 40.0 / 3.0, 1e-9);
+  EXPECT_NEAR(sun["n_1_rpm"].get<double>(), 1000.0 - 1000.0 / i, 1e-6);
+  EXPECT_NEAR(sun["K_gamma"].get<double>(), 1.1, 1e-12);
+  // The planet is balanced about its own axis: the ring pushes it with the same tangential force
+  // as the sun (ideal train), so both meshes have the same F_t.
+  EXPECT_NEAR(ring["F_t_N"].get<double>(), sun["F_t_N"].get<double>(), 1e-6 * sun["F_t_N"].get<double>());
+  // The planet (pinion of the ring mesh) turns z_s/z_p times the sun's relative speed.
+  EXPECT_NEAR(ring["n_1_rpm"].get<double>(), (1000.0 - 1000.0 / i) * 21.0 / 43.0, 1e-6);
+  // Load cycles: the sun meets 3 planets per relative turn, a planet tooth one sun per turn.
+  const double hours = 10000.0;
+  EXPECT_NEAR(sun["gears"][0]["N_L"].get<double>(), 3.0 * 60.0 * hours * sun["n_1_rpm"].get<double>(), 1.0);
+  EXPECT_NEAR(sun["gears"][1]["N_L"].get<double>(), 60.0 * hours * ring["n_1_rpm"].get<double>(), 1.0);
+  // The planet is bent both ways (Y_M = 0.7), the sun one way.
+  EXPECT_DOUBLE_EQ(sun["gears"][1]["Y_M"].get<double>(), 0.7);
+  EXPECT_DOUBLE_EQ(sun["gears"][0]["Y_M"].get<double>(), 1.0);
+  EXPECT_FALSE(nlohmann::json::parse(r.out)["rating"]["weakest"].get<std::string>().empty());
+}
+
+TEST(TrainRating, TorqueDoublesStresses) {
+  const auto a = nlohmann::json::parse(run("'" + kFile + "' --torque sun=40 --rate --format json").out)["rating"]["meshes"];
+  const auto b = nlohmann::json::parse(run("'" + kFile + "' --torque sun=80 --rate --format json").out)["rating"]["meshes"];
+  EXPECT_NEAR(b[0]["F_t_N"].get<double>() / a[0]["F_t_N"].get<double>(), 2.0, 1e-9);
+  EXPECT_LT(b[0]["gears"][0]["S_H"].get<double>(), a[0]["gears"][0]["S_H"].get<double>());
+}
+
+TEST(TrainRating, BadInput) {
+  const CliRun no_load = run("'" + kFile + "' --rate");
+  EXPECT_EQ(no_load.status, 2);
+  EXPECT_NE(no_load.err.find("'--rate'"), std::string::npos) << no_load.err;
+  const fs::path bad = fs::temp_directory_path() / ("gearkit-train-rating-bad-" + std::to_string(::getpid()) + ".yaml");
+  std::ifstream in(kFile);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  s.replace(s.find("material: 18CrNiMo7-6"), std::string("material: 18CrNiMo7-6").size(), "material: balsa");
+  std::ofstream(bad) << s;
+  const CliRun r = run("'" + bad.string() + "' --torque sun=40 --rate");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(bad.filename().string() + ":"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1);
+}
