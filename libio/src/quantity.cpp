@@ -68,6 +68,7 @@ const std::array kUnits = {
     UnitDef{"N", 1.0, kForceD},
     UnitDef{"kN", 1e3, kForceD},
     UnitDef{"MN", 1e6, kForceD},
+    UnitDef{"lbf", 4.4482216152605, kForceD},  // pound-force (US customary gear data: lbf*in, lbf)
     UnitDef{"J", 1.0, kEnergyD},
     UnitDef{"kJ", 1e3, kEnergyD},
     UnitDef{"MJ", 1e6, kEnergyD},

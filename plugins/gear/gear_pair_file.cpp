@@ -16,6 +16,7 @@ namespace gg = gearkit::gear;
 namespace {
 
 constexpr double kRpm = 30.0 / std::numbers::pi;
+constexpr std::size_t kMaxSpectrumRows = 10000;  // each row is a full rating (about 3 us): well under a second
 
 using io::MapReader;
 using io::Quantity;
@@ -98,6 +99,9 @@ gg::Material read_material(const YAML::Node& node, const std::string& file, cons
 void read_spectrum(MapReader& load, gg::RatingInput& r) {
   if (!load.has("spectrum")) return;
   const auto rows = load.sequence("spectrum");
+  if (rows.size() > kMaxSpectrumRows) {
+    io::fail_at(load.mark("spectrum"), fmt::format("expected at most {} spectrum rows, found {}", kMaxSpectrumRows, rows.size()));
+  }
   double share_sum = 0.0;
   bool shares = false;
   for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -142,7 +146,10 @@ void read_rating_details(MapReader& r, gg::RatingInput& in, PairFile& f) {
   if (auto q = r.optional_integer("quality")) in.quality = static_cast<int>(*q);
   f.marks["quality"] = r.mark("quality");
   in.nu_40 = r.optional_number("oil_viscosity").value_or(in.nu_40);
+  if (r.has("flank_roughness") && r.has("flank_rz")) io::fail_at(r.mark("flank_rz"), "give flank_roughness (R_a) or flank_rz, not both");
   if (r.has("flank_roughness")) in.R_z_flank.fill(6.0 * um(r, "flank_roughness"));
+  if (r.has("flank_rz")) in.R_z_flank.fill(um(r, "flank_rz"));
+  in.s_pr = r.optional_number("protuberance").value_or(0.0);
   if (r.has("root_roughness")) in.R_z_root.fill(um(r, "root_roughness"));
   if (auto d = r.optional_node("deviations")) {
     MapReader dv(*d, r.file(), "deviations");

@@ -130,6 +130,12 @@ void read_surface_and_lubrication(const io::po::variables_map& vm, gg::RatingInp
     const double R_a = positive(vm, "flank-roughness");
     r.R_z_flank = {6.0 * R_a, 6.0 * R_a};
   }
+  if (given(vm, "flank-rz")) {
+    if (given(vm, "flank-roughness")) fail("flank-rz", "cannot be combined with --flank-roughness (R_a): give one of them");
+    const double R_z = positive(vm, "flank-rz");
+    r.R_z_flank = {R_z, R_z};
+  }
+  if (given(vm, "protuberance")) r.s_pr = positive(vm, "protuberance", true);
   if (given(vm, "root-roughness")) {
     const double R_z = positive(vm, "root-roughness", true);
     r.R_z_root = {R_z, R_z};
@@ -192,7 +198,9 @@ void add_rating_options(io::po::options_description& desc) {
       ("life", text()->value_name("TIME"), "required life, h (default 20000 h)")
       ("oil-viscosity", text()->value_name("NU40"), "kinematic viscosity at 40 C, mm^2/s (default 220)")
       ("flank-roughness", text()->value_name("RA"), "flank roughness R_a, um (default 0.5: R_z = 3)")
+      ("flank-rz", text()->value_name("RZ"), "flank roughness R_z, um (instead of --flank-roughness)")
       ("root-roughness", text()->value_name("RZ"), "root roughness R_z, um (default 10)")
+      ("protuberance", text()->value_name("COEF"), "residual protuberance of the tool s_pr / m_n (ISO 6336-3 Eq. 19; default 0)")
       ("f-pb", text()->value_name("UM"), "transverse base pitch deviation f_pb, um (default from --quality)")
       ("f-falpha", text()->value_name("UM"), "profile form deviation f_falpha, um (default from --quality)")
       ("F-betax", text()->value_name("UM"), "initial equivalent misalignment F_betax, um (instead of f_ma, f_sh)")
@@ -222,7 +230,7 @@ bool rating_requested(const io::po::variables_map& vm) { return given(vm, "torqu
 
 bool any_rating_option(const io::po::variables_map& vm) {
   for (const char* key : {"torque1", "power", "speed1", "material1", "material2", "method", "application-factor", "life",
-                          "oil-viscosity", "flank-roughness", "root-roughness", "f-pb", "f-falpha", "F-betax", "f-ma", "f-sh",
+                          "oil-viscosity", "flank-roughness", "flank-rz", "protuberance", "root-roughness", "f-pb", "f-falpha", "F-betax", "f-ma", "f-sh",
                           "tip-relief", "rim1", "rim2", "min-safety-pitting", "min-safety-bending", "root-shift", "agma-quality",
                           "reliability", "mounting", "lewis-profile", "factor"}) {
     if (given(vm, key)) return true;

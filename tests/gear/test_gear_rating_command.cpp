@@ -177,3 +177,29 @@ TEST(GearSizeCli, BadInput) {
                    "0,0.1,0.2,0.3,0.4,0.5"),
                "'--modules'");
 }
+
+TEST(GearRatingCli, ShigleyExample14_4InUsCustomaryUnits) {
+  // Shigley 9th ed. Example 14-4 (see test_agma.cpp): P_d = 10 (m = 2.54 mm), F = 1.5 in, 4 hp at
+  // 1800 rev/min, Q_v = 6, R = 0.90, 1e8 pinion cycles, J = 0.30 / 0.40, C_p = 2300 psi^0.5
+  // (190.98 MPa^0.5), grade 1 steel 240 / 200 HB (HV = HB / 0.95 in gearkit's materials).
+  // Published: S_F = 5.62 / 6.82, S_H = 1.69 / 1.52.
+  const CliRun r = run("--z1 17 --z2 52 --module 2.54mm --face-width 1.5in --power 4hp --speed1 1800 "
+                       "--material1 through-hardened-alloy:MQ:252.6316 --material2 through-hardened-alloy:MQ:210.5263 "
+                       "--method agma --agma-quality 6 --reliability 0.9 --life 925.926h --factor J1=0.30 --factor J2=0.40 "
+                       "--factor Z_E=190.98 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto g = nlohmann::json::parse(r.out)["rating"]["gears"];
+  EXPECT_NEAR(g[0]["S_F"].get<double>(), 5.62, 0.01);
+  EXPECT_NEAR(g[1]["S_F"].get<double>(), 6.82, 0.01);
+  EXPECT_NEAR(g[0]["S_H"].get<double>(), 1.69, 0.01);
+  EXPECT_NEAR(g[1]["S_H"].get<double>(), 1.52, 0.01);
+}
+
+TEST(GearRatingCli, ProtuberanceThinsTheRoot) {
+  auto Y_F = [](const std::string& extra) {
+    const CliRun r = run(kPair + kLoad + "--quality 5 --format json " + extra);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out)["rating"]["gears"][0]["Y_F"].get<double>();
+  };
+  EXPECT_GT(Y_F("--protuberance 0.05"), Y_F(""));
+}

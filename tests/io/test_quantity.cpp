@@ -49,6 +49,7 @@ TEST(Quantity, DerivedAndOtherUnits) {
   EXPECT_DOUBLE_EQ(parse_quantity_si("10 1/s", Quantity::angular_velocity, ""), 10 * 2 * pi);
   EXPECT_DOUBLE_EQ(parse_quantity_si("2 m/s^2", Quantity::acceleration, ""), 2);
   EXPECT_DOUBLE_EQ(parse_quantity_si("3 kN*m", Quantity::torque, ""), 3000);
+  EXPECT_NEAR(parse_quantity_si("140.08 lbf*in", Quantity::torque, ""), 140.08 * 4.4482216152605 * 0.0254, 1e-12);  // pound-force (NIST SP 811)
   EXPECT_DOUBLE_EQ(parse_quantity_si("1 hp", Quantity::power, ""), 745.69987158227022);
   EXPECT_DOUBLE_EQ(parse_quantity_si("5 N/mm", Quantity::stiffness, ""), 5000);
   EXPECT_DOUBLE_EQ(parse_quantity_si("200 GPa", Quantity::pressure, ""), 200e9);
