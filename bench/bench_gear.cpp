@@ -1,6 +1,8 @@
 // Benchmarks of libgear (Google Benchmark): the inverse involute (target 20M+ evaluations/s)
 // and a complete gear-pair table (both gears and the pair, target 1M+ tables/s).
+#include <gearkit/gear/accuracy.hpp>
 #include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/gear/inspection.hpp>
 #include <gearkit/gear/involute.hpp>
 #include <gearkit/gear/rating.hpp>
 #include <gearkit/gear/sizing.hpp>
@@ -136,6 +138,41 @@ void BM_SizingDefaultSearch(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(gg::size_gear_pair(s));
 }
 BENCHMARK(BM_SizingDefaultSearch)->Unit(benchmark::kMillisecond);
+
+// All ISO 1328-1:2013 flank tolerances of one gear (nine formulas, rounding, scope checks).
+void BM_FlankTolerances(benchmark::State& state) {
+  gg::ToleranceInput in;
+  in.d = 120.0;
+  in.m_n = 3.0;
+  in.b = 30.0;
+  in.z = 40;
+  in.grade = 7;
+  int n = 0;
+  for (auto _ : state) {
+    in.grade = 1 + (n++ % 11);
+    benchmark::DoNotOptimize(gg::flank_tolerances(in));
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+}
+BENCHMARK(BM_FlankTolerances);
+
+// The inspection data of a pair on top of its table (tolerances, ISO/TR 10064-2 allowances, W_k
+// and M_d limits, pin ranges by bisection, backlash range); state.range(0) = 1 adds an operating
+// temperature (a second thermal state).
+void BM_Inspection(benchmark::State& state) {
+  gg::GearPairInput in;
+  in.z1 = 20;
+  in.z2 = 40;
+  in.module = 3.0;
+  in.face_width = 30.0;
+  const gg::GearPairResult table = gg::compute_gear_pair(in);
+  gg::InspectionInput ii;
+  ii.grade = {7, 7};
+  if (state.range(0) == 1) ii.T_gears = 70.0;
+  for (auto _ : state) benchmark::DoNotOptimize(gg::compute_inspection(in, table, ii));
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+}
+BENCHMARK(BM_Inspection)->Arg(0)->Arg(1);
 
 }  // namespace
 
