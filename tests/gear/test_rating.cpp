@@ -306,3 +306,19 @@ TEST(RatingQuality, DeviationsFromTheIso1328Grade) {
   EXPECT_GT(coarse.K_Hbeta, fine.K_Hbeta);
   EXPECT_GT(fine.K_v, 1.0);
 }
+
+TEST(RatingConventions, TipDiametersWithOrWithoutTipShortening) {
+  // The contact ratio (and Z_eps, Z_B, h_Fe) takes the tip diameters as made. With the tip
+  // shortening of ISO 21771 (k m_n = 0.01 mm here) eps_alpha = 1.548; without it 1.5495, the
+  // value ISO/TR 6336-30 example 1 implies (c_gamma_alpha / c' = 0.75 eps_alpha + 0.25: 1.549).
+  auto in = tr_example1_geometry();
+  const auto load = tr_example1_load();
+  const auto shortened = gg::rate_gear_pair(in, gg::compute_gear_pair(in), load);
+  in.apply_tip_shortening = false;
+  const auto full = gg::rate_gear_pair(in, gg::compute_gear_pair(in), load);
+  EXPECT_NEAR(shortened.eps_alpha, 1.548, 0.0005);
+  EXPECT_NEAR(full.eps_alpha, 1.549, 0.0006);
+  EXPECT_NEAR(full.c_gamma_alpha, 17.46485, 0.01);
+  EXPECT_LT(full.Z_epsilon, shortened.Z_epsilon);
+  EXPECT_NEAR(full.sigma_H0, 1206.58, 0.3);
+}
