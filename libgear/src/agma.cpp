@@ -123,17 +123,8 @@ double agma_J_from_iso(const Mesh& m, const RatingInput& in, int i) {
 }  // namespace
 
 PairRating rate_agma(const Mesh& m, const RatingInput& in) {
-  PairRating r;
-  r.method = RatingMethod::agma;
+  PairRating r = operating_point(RatingMethod::agma, m, in, in.T_1, in.n_1);
   const auto& f = in.factors;
-  r.T_1 = in.T_1;
-  r.n_1 = in.n_1;
-  r.F_t = iso6336::nominal_tangential_load(in.T_1, m.d[0]);
-  r.v = iso6336::pitch_line_speed(m.d[0], in.n_1);
-  r.K_A = in.K_A;
-  r.eps_alpha = m.eps_alpha;
-  r.eps_beta = m.eps_beta;
-  r.eps_gamma = m.eps_gamma;
   const int Q_v = in.Q_v > 0 ? in.Q_v : in.quality > 0 ? 17 - in.quality : 0;
   if (Q_v == 0 && !f.has(Factor::K_v)) {
     throw RatingError("Q_v", "the AGMA dynamic factor needs the quality number Q_v (or the ISO grade, or an imposed K_v)");
@@ -162,8 +153,8 @@ PairRating rate_agma(const Mesh& m, const RatingInput& in) {
     const double Z_N = imposed_or(f, per_gear(Factor::Z_N1, i), agma::contact_cycle_factor(g.N_L));
     const double C_H = i == 0 ? 1.0 : imposed_or(f, Factor::C_H, agma::hardness_ratio_factor(in.material[0].HB, mat.HB, m.u));
     const auto [S_t, S_c] = agma_strengths(mat);
-    g.sigma_F = agma::bending_stress(r.F_t, in.K_A, r.K_v, K_s, r.K_Fbeta, K_B, m.b, m_t, J);
-    g.sigma_H = agma::contact_stress(r.Z_E, r.F_t, in.K_A, r.K_v, K_s, r.K_Hbeta, C_f, m.d_w[0], m.b, I);
+    g.sigma_F = agma::bending_stress(r.F_t * r.K_gamma, in.K_A, r.K_v, K_s, r.K_Fbeta, K_B, m.b, m_t, J);
+    g.sigma_H = agma::contact_stress(r.Z_E, r.F_t * r.K_gamma, in.K_A, r.K_v, K_s, r.K_Hbeta, C_f, m.d_w[0], m.b, I);
     g.sigma_FG = S_t * Y_N / K_R;
     g.sigma_HG = S_c * Z_N * C_H / K_R;
     g.sigma_FP = g.sigma_FG / in.S_Fmin;

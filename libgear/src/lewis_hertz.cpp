@@ -70,22 +70,13 @@ namespace gearkit::gear::detail {
 // (against sigma_Hlim), with the Barth velocity factor; helical gears by their normal module
 // and virtual tooth count.
 PairRating rate_lewis_hertz(const Mesh& m, const RatingInput& in) {
-  PairRating r;
-  r.method = RatingMethod::lewis_hertz;
+  PairRating r = operating_point(RatingMethod::lewis_hertz, m, in, in.T_1, in.n_1);
   const auto& f = in.factors;
-  r.T_1 = in.T_1;
-  r.n_1 = in.n_1;
-  r.K_A = in.K_A;
-  r.F_t = iso6336::nominal_tangential_load(in.T_1, m.d[0]);
-  r.v = iso6336::pitch_line_speed(m.d[0], in.n_1);
-  r.eps_alpha = m.eps_alpha;
-  r.eps_beta = m.eps_beta;
-  r.eps_gamma = m.eps_gamma;
   r.K_v = imposed_or(f, Factor::K_v, lewis::velocity_factor(in.lewis_profile, r.v));
   r.Z_E = imposed_or(f, Factor::Z_E, iso6336::elasticity_factor(in.material[0].E, in.material[0].nu, in.material[1].E, in.material[1].nu));
   const double r_1 = lewis::pitch_point_radius(m.d_w[0], m.alpha_wt);
   const double r_2 = lewis::pitch_point_radius(m.d_w[1], m.alpha_wt);
-  const double W = r.F_t * in.K_A;
+  const double W = r.F_t * in.K_A * r.K_gamma;  // planets: the share of the most loaded one
   const double sigma_H = lewis::contact_stress(r.Z_E, W, r.K_v, m.b, m.alpha_wt, r_1, r_2, m.internal);
   r.extra = {{"r_1_mm", r_1}, {"r_2_mm", r_2}};
   for (int i = 0; i < 2; ++i) {

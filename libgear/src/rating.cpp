@@ -246,9 +246,9 @@ void validate(const RatingInput& in) {
 namespace detail {
 
 // The ISO 6336 rating at one operating point, without life evaluation.
-PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1, double n_1) {
+PairRating operating_point(RatingMethod method, const Mesh& m, const RatingInput& in, double T_1, double n_1) {
   PairRating r;
-  r.method = RatingMethod::iso6336;
+  r.method = method;
   r.T_1 = T_1;
   r.n_1 = n_1;
   r.K_A = in.K_A;
@@ -258,6 +258,11 @@ PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1,
   r.eps_gamma = m.eps_gamma;
   r.F_t = iso::nominal_tangential_load(T_1, m.d[0]);
   r.v = iso::pitch_line_speed(m.d[0], n_1);
+  return r;
+}
+
+PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1, double n_1) {
+  PairRating r = operating_point(RatingMethod::iso6336, m, in, T_1, n_1);
   pair_contact_factors(m, in, r);
   dynamic_factor(m, in, r);
   face_load_factors(m, in, r);

@@ -24,6 +24,9 @@ double imposed_or(const ImposedFactors& f, Factor which, double computed);
 Factor per_gear(Factor first, int i);
 double hours_for_cycles(double N, double n, double cycles_per_rev);
 
+/// A rating with the load of the operating point (T_1, n_1, F_t, v, K_A, K_gamma, contact ratios) filled in.
+PairRating operating_point(RatingMethod method, const Mesh& m, const RatingInput& in, double T_1, double n_1);
+
 /// ISO 6336 at one operating point (no life evaluation).
 PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1, double n_1);
 /// sigma_H, sigma_HP, S_H and the factors of ISO 6336-2 for both gears (needs r's K factors).

@@ -1,44 +1,25 @@
 // CLI tests of the load-capacity part of `gearkit gear` (plugins/gear/gear_rating_*.cpp,
 // gear_pair_file.cpp, gear_size.cpp), run through GEARKIT_EXE.
+#include "run_gearkit.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using CliRun = gearkit::testing::RunResult;
+
+CliRun run(const std::string& args) { return gearkit::testing::run_gearkit("gear " + args); }
 
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("gearkit-rating-test-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  static const fs::path dir = gearkit::testing::scratch_dir("gear-rating");
   return dir;
-}
-
-CliRun run(const std::string& args) {
-  const fs::path out = scratch() / "out.txt", err = scratch() / "err.txt";
-  const std::string cmd = std::string("'") + GEARKIT_EXE + "' gear " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream o(out), e(err);
-  std::stringstream so, se;
-  so << o.rdbuf();
-  se << e.rdbuf();
-  r.out = so.str();
-  r.err = se.str();
-  return r;
 }
 
 std::string write(const std::string& name, const std::string& text) {

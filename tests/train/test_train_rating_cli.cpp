@@ -1,41 +1,22 @@
 // CLI tests of `gearkit train FILE --torque ... --rate` (plugins/train/train_rating.cpp).
+#include "run_gearkit.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using CliRun = gearkit::testing::RunResult;
 
-CliRun run(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("gearkit-train-rating-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path out = dir / "out.txt", err = dir / "err.txt";
-  const std::string cmd = std::string("'") + GEARKIT_EXE + "' train " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream o(out), e(err);
-  std::stringstream so, se;
-  so << o.rdbuf();
-  se << e.rdbuf();
-  r.out = so.str();
-  r.err = se.str();
-  return r;
-}
+CliRun run(const std::string& args) { return gearkit::testing::run_gearkit("train " + args); }
 
 const std::string kFile = std::string(GEARKIT_SOURCE_DIR) + "/examples/trains/rated_planetary.yaml";
 
