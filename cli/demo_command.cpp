@@ -15,7 +15,7 @@ namespace gearkit::cli {
 
 namespace fs = std::filesystem;
 
-int run_demo_command(kin::CommandContext& context, const kin::PluginHost& host) {
+int run_demo_command(plugin::CommandContext& context, const plugin::PluginHost& host) {
   io::po::options_description desc("gearkit demo options");
   desc.add_options()("help,h", "show this help and exit")(
       "output,o", io::po::value<std::string>()->default_value("gearkit-demo")->value_name("DIR"),
@@ -36,7 +36,7 @@ int run_demo_command(kin::CommandContext& context, const kin::PluginHost& host) 
   }
   context.out << fmt::format("gearkit demo: writing into {}\n\n", fs::absolute(dir).lexically_normal().string());
   for (const auto& step : demo_steps()) {
-    const kin::CommandSpec* spec = host.find_command(step.command);
+    const plugin::CommandSpec* spec = host.find_command(step.command);
     if (!spec) {
       throw io::InputError(fmt::format("demo: the '{}' plugin is not loaded; see 'gearkit plugins'", step.command));
     }
@@ -48,7 +48,7 @@ int run_demo_command(kin::CommandContext& context, const kin::PluginHost& host) 
       args.push_back(s);
     }
     std::ostringstream captured;
-    kin::CommandContext sub{args, captured, context.err};
+    plugin::CommandContext sub{args, captured, context.err, context.host};
     int status = spec->run(sub);
     context.out << "== " << step.title << " ==\n" << captured.str() << "\n";
     if (!step.report_file.empty())

@@ -1,6 +1,6 @@
 #pragma once
 // `gearkit kin`: the analysis results of one run, independent of how they are printed.
-#include <gearkit/io/mechanism_yaml.hpp>
+#include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/dof.hpp>
 #include <gearkit/kin/kinetostatics.hpp>
 #include <gearkit/kin/sweep.hpp>
@@ -32,9 +32,9 @@ struct KinAnalysis {
 };
 
 /// Fills a KinPosition from a solved Data (positions, velocities, accelerations done).
-KinPosition describe_position(const io::Mechanism& mech, kin::Data& data, int driver, double input);
+KinPosition describe_position(const mechanism::Mechanism& mech, kin::Data& data, int driver, double input);
 
 /// The SVG animation of the mechanism through the positions (SMIL, loops forever).
-std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis);
+std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis);
 
 }  // namespace gearkit::cli

@@ -21,7 +21,7 @@ Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector
 
 }  // namespace
 
-std::string animation_svg(const io::Mechanism& mech, const KinAnalysis& analysis) {
+std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis) {
   const kin::Model& m = mech.model;
   // At most 240 frames: the browser interpolates between them.
   std::vector<const KinPosition*> frames;

@@ -5,6 +5,7 @@
 // driving torque and joint reactions.
 #include "kin_analysis.hpp"
 #include "kin_command.hpp"
+#include "kin_reactions.hpp"
 #include "kin_example.hpp"
 
 #include <gearkit/io/atomic_file.hpp>
@@ -27,27 +28,27 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
-bool angular(const io::Mechanism& mech, int driver) {
+bool angular(const mechanism::Mechanism& mech, int driver) {
   return mech.drivers[static_cast<std::size_t>(driver)].quantity == kin::DriverQuantity::angle;
 }
 // Input values are shown in deg (angles) or mm (displacements).
-double shown_input(const io::Mechanism& mech, int driver, double v) {
+double shown_input(const mechanism::Mechanism& mech, int driver, double v) {
   return angular(mech, driver) ? v * kRadToDeg : v * 1000.0;
 }
-std::string input_unit(const io::Mechanism& mech, int driver) { return angular(mech, driver) ? "deg" : "mm"; }
-std::string input_key(const io::Mechanism& mech, int driver) { return "input_" + input_unit(mech, driver); }
+std::string input_unit(const mechanism::Mechanism& mech, int driver) { return angular(mech, driver) ? "deg" : "mm"; }
+std::string input_key(const mechanism::Mechanism& mech, int driver) { return "input_" + input_unit(mech, driver); }
 
 double shown_output(const kin::Output& o, double v) { return o.angular() ? v * kRadToDeg : v * 1000.0; }
 std::string output_unit(const kin::Output& o) { return o.angular() ? "deg" : "mm"; }
 
 // START:END:STEP with the driver's unit as default.
-io::DriverRange parse_sweep(const std::string& text, io::Quantity q, std::string_view unit) {
+mechanism::DriverRange parse_sweep(const std::string& text, io::Quantity q, std::string_view unit) {
   std::vector<std::string> parts;
   std::stringstream ss(text);
   for (std::string part; std::getline(ss, part, ':');) parts.push_back(part);
   if (parts.size() != 3)
     io::fail_option("--sweep", fmt::format("expected START:END:STEP (e.g. 0:360:1), found {}", io::quote(text)));
-  io::DriverRange r;
+  mechanism::DriverRange r;
   try {
     r.start = io::parse_quantity_si(parts[0], q, unit);
     r.end = io::parse_quantity_si(parts[1], q, unit);
@@ -75,19 +76,19 @@ nlohmann::json coordinates_json(const kin::Model& m, const Eigen::VectorXd& v, i
 }
 
 // Velocity ratios are shown per rad or per mm of input, in rad or mm of output.
-std::string ratio_unit(const io::Mechanism& mech, int driver, const kin::Output& o) {
+std::string ratio_unit(const mechanism::Mechanism& mech, int driver, const kin::Output& o) {
   const bool in_angle = angular(mech, driver);
   if (o.angular()) return in_angle ? "-" : "rad/mm";
   return in_angle ? "mm/rad" : "-";
 }
 
-std::string effort_key(const io::Mechanism& mech, int driver) {
+std::string effort_key(const mechanism::Mechanism& mech, int driver) {
   return angular(mech, driver) ? "driving_torque_Nm" : "driving_force_N";
 }
 
 }  // namespace
 
-KinPosition describe_position(const io::Mechanism& mech, kin::Data& data, int driver, double input) {
+KinPosition describe_position(const mechanism::Mechanism& mech, kin::Data& data, int driver, double input) {
   KinPosition p;
   p.input = input;
   p.q = data.q;
@@ -106,8 +107,8 @@ KinPosition describe_position(const io::Mechanism& mech, kin::Data& data, int dr
 namespace {
 
 // A sweep when `range` is given, else one position at `at` (or the driver's value).
-KinAnalysis analyse(const io::Mechanism& mech, kin::Data& data, int driver, std::optional<double> at,
-                    const io::DriverRange* range) {
+KinAnalysis analyse(const mechanism::Mechanism& mech, kin::Data& data, int driver, std::optional<double> at,
+                    const mechanism::DriverRange* range) {
   KinAnalysis a;
   a.driver = driver;
   const kin::Model& m = mech.model;
@@ -191,7 +192,7 @@ KinAnalysis analyse(const io::Mechanism& mech, kin::Data& data, int driver, std:
   return a;
 }
 
-io::Report build_report(const io::Mechanism& mech, const KinAnalysis& a) {
+io::Report build_report(const mechanism::Mechanism& mech, const KinAnalysis& a) {
   const kin::Model& m = mech.model;
   const int driver = a.driver;
   io::Report rep;
@@ -265,15 +266,7 @@ io::Report build_report(const io::Mechanism& mech, const KinAnalysis& a) {
           p.forces->effort_lagrange[static_cast<std::size_t>(driver)];
       row.push_back(io::fixed(effort, 4));
       nlohmann::json reactions = nlohmann::json::array();
-      for (const kin::ConstraintReaction& r : p.forces->reactions) {
-        nlohmann::json rj;
-        rj["joint"] = r.name;
-        rj["kind"] = r.kind;
-        rj["on"] = m.body_name(r.body);
-        rj["force_N"] = {r.force.x(), r.force.y()};
-        if (r.kind == "prismatic") rj["moment_Nm"] = r.moment;
-        reactions.push_back(rj);
-      }
+      for (const kin::ConstraintReaction& r : p.forces->reactions) reactions.push_back(reaction_json(m, r));
       pj["reactions"] = reactions;
       nlohmann::json members = nlohmann::json::array();
       for (const kin::TwoForceMember& tf : p.forces->two_force_members)
@@ -329,6 +322,7 @@ io::Report build_report(const io::Mechanism& mech, const KinAnalysis& a) {
       for (const kin::ConstraintReaction& c : p.forces->reactions)
         r.add_row({c.name, c.kind, m.body_name(c.body), io::fixed(c.force.x(), 3), io::fixed(c.force.y(), 3), io::fixed(c.force.norm(), 3)});
       rep.tables.push_back(std::move(r));
+      if (auto elements = element_reaction_table(*p.forces)) rep.tables.push_back(std::move(*elements));
       if (!p.forces->two_force_members.empty()) {
         io::Table tf{"Two-force members", {"link", "axial force [N]", "state"}, {}};
         for (const kin::TwoForceMember& x : p.forces->two_force_members)
@@ -354,7 +348,7 @@ io::Report build_report(const io::Mechanism& mech, const KinAnalysis& a) {
   return rep;
 }
 
-std::string plot_svg(const io::Mechanism& mech, const KinAnalysis& a) {
+std::string plot_svg(const mechanism::Mechanism& mech, const KinAnalysis& a) {
   io::Plot plot;
   plot.title = mech.title;
   plot.x_label = fmt::format("{} [{}]", mech.drivers[static_cast<std::size_t>(a.driver)].name, input_unit(mech, a.driver));
@@ -396,7 +390,7 @@ std::string plot_svg(const io::Mechanism& mech, const KinAnalysis& a) {
 
 }  // namespace
 
-int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
+int run_kin_command(plugin::CommandContext& context) {
   io::po::options_description desc("gearkit kin options");
   desc.add_options()("file", io::po::value<std::string>()->value_name("FILE.yaml"), "mechanism model (see docs/kin.md)")(
       "at", io::po::value<std::string>()->value_name("VALUE"), "analyse one position at this input (deg or mm by default)")(
@@ -427,7 +421,8 @@ int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
   if (vm.count("at") && vm.count("sweep")) io::fail_option("--at", "expected either --at or --sweep, found both");
 
   const std::string file = vm["file"].as<std::string>();
-  io::Mechanism mech = io::load_mechanism(file, [&host](const std::string& type) { return host.find_element_type(type); });
+  mechanism::Mechanism mech =
+      mechanism::load_mechanism(file, [&context](std::string_view type) { return context.host.find_element_type(type); });
   const kin::Model& m = mech.model;
   if (mech.drivers.empty())
     io::fail_at({file, 0, 0}, "expected at least one driver (an input angle or slider displacement), found none");
@@ -453,7 +448,7 @@ int run_kin_command(kin::CommandContext& context, const kin::PluginHost& host) {
   const io::Quantity q = angular(mech, driver) ? io::Quantity::angle : io::Quantity::length;
   const std::string unit = input_unit(mech, driver);
   std::optional<double> at;
-  io::DriverRange range{};
+  mechanism::DriverRange range{};
   bool sweeping = mech.drivers[static_cast<std::size_t>(driver)].range.has_value();
   if (sweeping) range = *mech.drivers[static_cast<std::size_t>(driver)].range;
   if (vm.count("at")) {

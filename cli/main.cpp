@@ -6,7 +6,8 @@
 #include "kin_command.hpp"
 
 #include <gearkit/io/error.hpp>
-#include <gearkit/kin/plugin_host.hpp>
+#include <gearkit/mechanism/reader.hpp>
+#include <gearkit/plugin/plugin_host.hpp>
 
 #include <boost/program_options.hpp>
 #include <fmt/format.h>
@@ -27,7 +28,7 @@
 namespace {
 
 namespace po = boost::program_options;
-namespace kin = gearkit::kin;
+namespace plugin = gearkit::plugin;
 namespace cli = gearkit::cli;
 
 constexpr const char* kUsage =
@@ -106,7 +107,15 @@ void install_out_of_memory_handling() {
   std::set_terminate(on_terminate);
 }
 
-void print_help(std::ostream& out, const po::options_description& global, const kin::PluginHost& host) {
+// What no plugin may register: the commands above and the joint types of mechanism files.
+plugin::BuiltinNames builtin_names() {
+  plugin::BuiltinNames names;
+  for (const auto& b : kBuiltins) names.commands.emplace_back(b.name);
+  names.element_types = gearkit::mechanism::builtin_joint_types();
+  return names;
+}
+
+void print_help(std::ostream& out, const po::options_description& global, const plugin::PluginHost& host) {
   out << kUsage << "\n\n" << "gearkit " << GEARKIT_VERSION_STRING
       << ": gear and transmission design around a planar kinematics solver.\n\n"
       << global << "\nCommands:\n";
@@ -149,26 +158,27 @@ int run(int argc, char** argv) {
     throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", e.what()));
   }
   if (vm.count("version")) {
-    std::cout << "gearkit " << GEARKIT_VERSION_STRING << " (plugin API " << kin::kPluginApiVersion << ")\n";
+    std::cout << "gearkit " << GEARKIT_VERSION_STRING << " (plugin API " << plugin::kApiVersion << ")\n";
     return 0;
   }
 
-  kin::PluginHost host;
+  plugin::PluginHost host(builtin_names());
   if (vm.count("plugin")) {
     for (const auto& f : vm["plugin"].as<std::vector<std::string>>()) {
       try {
         host.load(f);
-      } catch (const kin::PluginError& e) {
+      } catch (const plugin::PluginError& e) {
         throw gearkit::io::InputError(fmt::format("option '--plugin': {}", e.what()));
       }
     }
   }
-  auto locations = kin::default_plugin_locations(kin::current_executable());
-  std::vector<kin::PluginError> load_errors = host.load_all(locations);
-  // A plugin that fails to load is a warning for every command but `plugins`, whose job is to
-  // say so: there each failure is an error line and the status is 2 (see after dispatch).
+  const auto locations = plugin::default_plugin_locations(plugin::current_executable());
+  host.load_all(locations);
+  // A plugin that fails to load costs every command but `plugins` one warning line, and only
+  // that (docs/design.md, "Plugins"); `plugins`, whose job is to say so, exits 2 (after dispatch).
   if (command != "plugins")
-    for (const auto& e : load_errors) print_diagnostic(std::cerr, fmt::format("warning: {}", e.what()));
+    for (const auto& e : host.failures())
+      print_diagnostic(std::cerr, fmt::format("warning: {} (not loaded)", e.what()));
 
   if (vm.count("help") || command.empty()) {
     if (command.empty() && !vm.count("help"))
@@ -186,17 +196,18 @@ int run(int argc, char** argv) {
     command_args = {"--help"};
   }
 
-  kin::CommandContext context{command_args, std::cout, std::cerr};
+  plugin::CommandContext context{command_args, std::cout, std::cerr, host};
   if (command == "plugins") {
-    int status = cli::run_plugins_command(context, host, load_errors, locations);
-    if (load_errors.empty()) return status;
-    for (const auto& e : load_errors) print_diagnostic(std::cerr, e.what());
-    throw gearkit::io::InputError(fmt::format("{} plugin file(s) could not be loaded; see the lines above",
-                                              load_errors.size()));
+    const int status = cli::run_plugins_command(context, host, locations);
+    const auto& failures = host.failures();
+    if (failures.empty()) return status;
+    // One error line per file that failed; the last one is the reason for the status.
+    for (std::size_t i = 0; i + 1 < failures.size(); ++i) print_diagnostic(std::cerr, failures[i].what());
+    throw gearkit::io::InputError(failures.back().what());
   }
   if (command == "demo") return cli::run_demo_command(context, host);
-  if (command == "kin") return cli::run_kin_command(context, host);
-  if (const kin::CommandSpec* spec = host.find_command(command)) return spec->run(context);
+  if (command == "kin") return cli::run_kin_command(context);
+  if (const plugin::CommandSpec* spec = host.find_command(command)) return spec->run(context);
 
   std::vector<std::string> names;
   for (const auto& b : kBuiltins) names.emplace_back(b.name);
@@ -219,7 +230,7 @@ int main(int argc, char** argv) {
     std::cout.flush();
     print_diagnostic(std::cerr, e.what());
     return 2;
-  } catch (const gearkit::kin::PluginError& e) {
+  } catch (const gearkit::plugin::PluginError& e) {
     print_diagnostic(std::cerr, e.what());
     return 2;
   } catch (const std::bad_alloc&) {

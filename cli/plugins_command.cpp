@@ -7,8 +7,37 @@
 
 namespace gearkit::cli {
 
-int run_plugins_command(kin::CommandContext& context, const kin::PluginHost& host,
-                        const std::vector<kin::PluginError>& load_errors,
+namespace {
+
+io::Table loaded_table(const plugin::PluginHost& host, nlohmann::json& json) {
+  io::Table table{"", {"plugin", "version", "commands", "element types", "file"}, {}};
+  json = nlohmann::json::array();
+  for (const auto& p : host.plugins()) {
+    table.add_row({p.name, p.version, fmt::format("{}", fmt::join(p.commands, " ")),
+                   fmt::format("{}", fmt::join(p.element_types, " ")), p.file.string()});
+    json.push_back({{"name", p.name},
+                    {"version", p.version},
+                    {"summary", p.summary},
+                    {"file", p.file.string()},
+                    {"commands", p.commands},
+                    {"element_types", p.element_types}});
+  }
+  return table;
+}
+
+io::Table failed_table(const plugin::PluginHost& host, nlohmann::json& json) {
+  io::Table table{"Failed to load", {"file", "reason"}, {}};
+  json = nlohmann::json::array();
+  for (const auto& e : host.failures()) {
+    table.add_row({e.file().string(), e.reason()});
+    json.push_back({{"file", e.file().string()}, {"reason", e.reason()}, {"error", e.what()}});
+  }
+  return table;
+}
+
+}  // namespace
+
+int run_plugins_command(plugin::CommandContext& context, const plugin::PluginHost& host,
                         const std::vector<std::filesystem::path>& locations) {
   io::po::options_description desc("gearkit plugins options");
   io::add_common_options(desc);
@@ -17,37 +46,22 @@ int run_plugins_command(kin::CommandContext& context, const kin::PluginHost& hos
   if (!io::parse_command_line(context.args, desc, none, vm, "gearkit plugins [--format text|json|csv|md]",
                               context.out))
     return 0;
-  io::CommonOptions common = io::common_options(vm);
+  const io::CommonOptions common = io::common_options(vm);
 
   io::Report report;
-  report.title = fmt::format("gearkit {} plugins (plugin API {})", GEARKIT_VERSION_STRING, kin::kPluginApiVersion);
-  io::Table table{"", {"plugin", "version", "commands", "element types", "file"}, {}};
-  nlohmann::json plugins = nlohmann::json::array();
-  for (const auto& p : host.plugins()) {
-    table.add_row({p.name, p.version, fmt::format("{}", fmt::join(p.commands, " ")),
-                   fmt::format("{}", fmt::join(p.element_types, " ")), p.file.string()});
-    plugins.push_back({{"name", p.name},
-                       {"version", p.version},
-                       {"summary", p.summary},
-                       {"file", p.file.string()},
-                       {"commands", p.commands},
-                       {"element_types", p.element_types}});
-  }
-  report.tables.push_back(std::move(table));
-  nlohmann::json errors = nlohmann::json::array();
-  for (const auto& e : load_errors) {
-    report.warnings.push_back(e.what());
-    errors.push_back({{"file", e.file().string()}, {"error", e.what()}});
-  }
+  report.title = fmt::format("gearkit {} plugins (plugin API {})", GEARKIT_VERSION_STRING, plugin::kApiVersion);
+  nlohmann::json plugins, errors;
+  report.tables.push_back(loaded_table(host, plugins));
+  if (!host.failures().empty()) report.tables.push_back(failed_table(host, errors));
   std::vector<std::string> where;
   for (const auto& l : locations) where.push_back(l.string());
   report.notes.push_back(fmt::format("Searched: {}", fmt::join(where, ":")));
-  report.json = {{"api_version", kin::kPluginApiVersion},
+  report.json = {{"api_version", plugin::kApiVersion},
                  {"plugins", plugins},
-                 {"errors", errors},
+                 {"errors", host.failures().empty() ? nlohmann::json::array() : errors},
                  {"search_path", where}};
-  int status = io::emit(report, common, context.out);
-  return load_errors.empty() ? status : 2;
+  // Failures are this command's errors: main prints one line each and exits 2.
+  return io::emit(report, common, context.out);
 }
 
 }  // namespace gearkit::cli

@@ -7,18 +7,6 @@
 function(gearkit_add_library name)
   cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE" ${ARGN})
   file(GLOB _src CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp")
-  if(NOT _src)
-    # A library whose first sources are still being written: headers only for now.
-    add_library(gearkit_${name} INTERFACE)
-    add_library(gearkit::${name} ALIAS gearkit_${name})
-    target_include_directories(gearkit_${name} INTERFACE
-      $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-    target_link_libraries(gearkit_${name} INTERFACE ${ARG_DEPS})
-    set_target_properties(gearkit_${name} PROPERTIES EXPORT_NAME ${name})
-    set_property(GLOBAL APPEND PROPERTY GEARKIT_LIBRARIES gearkit_${name})
-    install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-    return()
-  endif()
   add_library(gearkit_${name} SHARED ${_src})
   add_library(gearkit::${name} ALIAS gearkit_${name})
   set_target_properties(gearkit_${name} PROPERTIES EXPORT_NAME ${name}
@@ -33,21 +21,18 @@ function(gearkit_add_library name)
 endfunction()
 
 # gearkit_add_plugin(<name> DEPS <deps...>)
+#   (links gearkit::plugin and gearkit::io; a plugin with element types adds gearkit::mechanism)
 #   Builds plugins/<name>/*.cpp as the MODULE gearkit_plugin_<name>, placed in lib/gearkit/plugins
 #   of the build tree and of the install (where the executable looks, see default_plugin_locations).
 function(gearkit_add_plugin name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   file(GLOB _src CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cpp")
-  if(NOT _src)
-    message(STATUS "gearkit: plugin '${name}' has no sources yet; skipped")
-    return()
-  endif()
   add_library(gearkit_plugin_${name} MODULE ${_src})
   set_target_properties(gearkit_plugin_${name} PROPERTIES
     PREFIX "" OUTPUT_NAME "gearkit-${name}"
     LIBRARY_OUTPUT_DIRECTORY "${GEARKIT_PLUGIN_BUILD_DIR}"
     INSTALL_RPATH "$ORIGIN/../..")  # lib/gearkit/plugins -> lib
-  target_link_libraries(gearkit_plugin_${name} PRIVATE gearkit::kin gearkit::io gearkit_build_flags ${ARG_DEPS})
+  target_link_libraries(gearkit_plugin_${name} PRIVATE gearkit::plugin gearkit::io gearkit_build_flags ${ARG_DEPS})
   set_property(GLOBAL APPEND PROPERTY GEARKIT_PLUGINS gearkit_plugin_${name})
   install(TARGETS gearkit_plugin_${name} LIBRARY DESTINATION ${GEARKIT_PLUGIN_INSTALL_DIR})
 endfunction()
@@ -66,7 +51,6 @@ function(gearkit_add_test_suite name)
   target_compile_definitions(test_${name} PRIVATE
     GEARKIT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     GEARKIT_BINARY_DIR="${PROJECT_BINARY_DIR}"
-    GEARKIT_EXE="$<TARGET_FILE:gearkit>"
-    GEARKIT_SEEDS_DIR="${PROJECT_SOURCE_DIR}/../shared/seeds")
+    GEARKIT_EXE="$<TARGET_FILE:gearkit>")
   gtest_discover_tests(test_${name} DISCOVERY_MODE PRE_TEST PROPERTIES LABELS ${name})
 endfunction()

@@ -1,13 +1,13 @@
 // The smallest useful gearkit plugin: one command with options, using gearkit::io for the
 // command line and the report, so it gets --help, --format and --output like every command.
 #include <gearkit/io/command_line.hpp>
-#include <gearkit/kin/plugin.hpp>
+#include <gearkit/plugin/plugin.hpp>
 
 #include <fmt/format.h>
 
 namespace {
 
-int run_hello(gearkit::kin::CommandContext& context) {
+int run_hello(gearkit::plugin::CommandContext& context) {
   namespace io = gearkit::io;
   io::po::options_description desc("gearkit hello options");
   desc.add_options()("name", io::po::value<std::string>()->default_value("world"), "who to greet");
@@ -24,6 +24,6 @@ int run_hello(gearkit::kin::CommandContext& context) {
 
 GEARKIT_PLUGIN("hello", "1.0.0", "Example out-of-tree plugin")
 
-GEARKIT_PLUGIN_EXPORT void gearkit_plugin_register(gearkit::kin::PluginRegistrar& registrar) {
+GEARKIT_PLUGIN_EXPORT void gearkit_plugin_register(gearkit::plugin::PluginRegistrar& registrar) {
   registrar.add_command({"hello", "Greets (example of an out-of-tree plugin)", &run_hello});
 }

@@ -19,6 +19,35 @@ void add_point_force(Eigen::VectorXd& Q, const Data& data, const BodyPoint& p, c
 
 double spring_tension(const Spring& s, double length) { return s.stiffness * (length - s.free_length) + s.preload; }
 
+// Constraint k's reaction at the state in `data` for the multipliers `lambda`.
+ConstraintReaction reaction_of(const Model& model, const Data& data, int k, const Eigen::VectorXd& lambda) {
+  const ModelConstraint& mc = model.constraints()[static_cast<std::size_t>(k)];
+  const std::vector<int> bodies = mc.constraint->bodies();
+  std::vector<BodyState> states(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (bodies[i] == kGround) continue;
+    const int c = 3 * bodies[i];
+    states[i].r = data.q.segment<2>(c);
+    states[i].set_theta(data.q(c + 2));
+    states[i].r_dot = data.qd.segment<2>(c);
+    states[i].omega = data.qd(c + 2);
+  }
+  ConstraintReaction r;
+  r.constraint = k;
+  r.name = mc.name;
+  r.kind = mc.constraint->kind();
+  r.body = bodies.empty() ? kGround : bodies[0];
+  r.lambda = lambda.segment(mc.first_row, mc.constraint->equations());
+  const ConstraintInput in{states, data.t, 0.0};
+  Reaction reaction = mc.constraint->reaction(in, std::span<const double>(r.lambda.data(), static_cast<std::size_t>(r.lambda.size())));
+  r.force = reaction.force;
+  r.moment = reaction.moment;
+  r.at = reaction.at;
+  r.pin = reaction.pin;
+  r.values = std::move(reaction.values);
+  return r;
+}
+
 }  // namespace
 
 Eigen::VectorXd applied_forces(const Model& model, const Data& data) {
@@ -96,36 +125,22 @@ ForceAnalysis solve_forces(const Model& model, Data& data) {
     f.effort_virtual_power.push_back(-f.applied.dot(dq));
   }
 
-  // Reactions and the joint count per body (for two-force members).
-  std::map<int, std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>> revolute_ends;  // body -> (point, force on it)
+  // Reactions, and the pins and other constraints on each body (for two-force members).
+  std::map<int, std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>> pin_ends;  // body -> (point, force on it)
   std::map<int, int> other_constraints;
   for (std::size_t k = 0; k < model.constraints().size(); ++k) {
     const ModelConstraint& mc = model.constraints()[k];
+    const std::vector<int> bodies = mc.constraint->bodies();
     if (mc.constraint->is_driver()) {
-      for (int b : mc.constraint->bodies()) other_constraints[b] += 1;
+      for (int b : bodies) other_constraints[b] += 1;
       continue;
     }
-    ConstraintReaction r;
-    r.constraint = static_cast<int>(k);
-    r.name = mc.name;
-    r.kind = mc.constraint->kind();
-    r.lambda = f.lambda.segment(mc.first_row, mc.constraint->equations());
-    const std::vector<int> bodies = mc.constraint->bodies();
-    r.body = bodies.empty() ? kGround : bodies[0];
-    if (auto rev = dynamic_cast<const Revolute*>(mc.constraint.get())) {
-      r.force = -r.lambda.head<2>();
-      const Eigen::Vector2d at = point_position(data, rev->a());
-      revolute_ends[rev->a().body].push_back({at, r.force});
-      revolute_ends[rev->b().body].push_back({at, -r.force});
+    ConstraintReaction r = reaction_of(model, data, static_cast<int>(k), f.lambda);
+    if (r.pin && r.at && bodies.size() == 2) {
+      pin_ends[bodies[0]].push_back({*r.at, r.force});
+      pin_ends[bodies[1]].push_back({*r.at, -r.force});
     } else {
       for (int b : bodies) other_constraints[b] += 1;
-      if (auto pri = dynamic_cast<const Prismatic*>(mc.constraint.get())) {
-        const int guide = pri->guide().body;
-        const double theta_g = guide == kGround ? 0.0 : data.q(3 * guide + 2);
-        const Eigen::Vector2d n = rotate(theta_g, perp(pri->axis_local()));
-        r.force = -r.lambda(1) * n;
-        r.moment = -r.lambda(0);
-      }
     }
     f.reactions.push_back(std::move(r));
   }
@@ -137,7 +152,7 @@ ForceAnalysis solve_forces(const Model& model, Data& data) {
   for (const PointForce& pf : model.forces()) loaded[pf.at.body] = true;
   for (const BodyTorque& t : model.torques()) loaded[t.body] = true;
   for (const Spring& s : model.springs()) loaded[s.a.body] = loaded[s.b.body] = true;
-  for (const auto& [body, ends] : revolute_ends) {
+  for (const auto& [body, ends] : pin_ends) {
     if (body == kGround || ends.size() != 2 || loaded[body] || other_constraints[body] != 0) continue;
     const Eigen::Vector2d axis = ends[0].first - ends[1].first;
     if (axis.norm() == 0.0) continue;

@@ -56,7 +56,7 @@ Options read_options(const io::po::variables_map& vm) {
 
 }  // namespace
 
-int run_cam_command(kin::CommandContext& context) {
+int run_cam_command(plugin::CommandContext& context) {
   io::po::options_description desc("gearkit cam options (bare numbers: mm and deg)");
   desc.add_options()
       ("file", io::po::value<std::string>()->required(), "cam model (YAML, see docs/cam.md)")

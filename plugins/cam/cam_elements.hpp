@@ -1,9 +1,9 @@
 #pragma once
-#include <gearkit/kin/plugin.hpp>
+#include <gearkit/plugin/plugin.hpp>
 
 namespace gearkit::plugins::cam {
 
-/// Registers this plugin's element types for mechanism models (see gearkit/kin/element.hpp).
-void register_elements(kin::PluginRegistrar& registrar);
+/// Registers this plugin's element types for mechanism files (cam_follower).
+void register_elements(plugin::PluginRegistrar& registrar);
 
 }  // namespace gearkit::plugins::cam

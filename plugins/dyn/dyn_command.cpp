@@ -46,7 +46,7 @@ void add_drive_line(const Model& m, io::Report& report) {
 
 }  // namespace
 
-int run_dyn_command(kin::CommandContext& context) {
+int run_dyn_command(plugin::CommandContext& context) {
   po::options_description desc("gearkit dyn options");
   desc.add_options()
       ("file", po::value<std::string>()->value_name("FILE"), "machine model (YAML, see docs/dyn.md)")
@@ -61,7 +61,8 @@ int run_dyn_command(kin::CommandContext& context) {
   const io::CommonOptions common = io::common_options(vm);
   if (!vm.count("file")) throw io::InputError(fmt::format("missing the model file; usage: {}", usage));
 
-  const Model model = load_model(vm["file"].as<std::string>());
+  const Model model = load_model(vm["file"].as<std::string>(),
+                                 [&context](std::string_view type) { return context.host.find_element_type(type); });
   Output out;
   out.report.title = "Machine dynamics: " + (model.title.empty() ? model.file : model.title);
   if (!model.title.empty()) out.report.json["title"] = model.title;

@@ -1,6 +1,6 @@
 #include "dyn_mechanism.hpp"
 
-#include <gearkit/io/mechanism_yaml.hpp>
+#include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/data.hpp>
 #include <gearkit/kin/solve.hpp>
 #include <gearkit/kin/sweep.hpp>
@@ -16,10 +16,9 @@ namespace gearkit::plugins::dyn {
 
 namespace gd = gearkit::dyn;
 
-gd::InertiaTable mechanism_inertia_table(const std::string& path, int intervals, const io::SourceMark& where) {
-  // Plugin elements (gear meshes, cams) need the plugin host, which only the executable has;
-  // a linkage of joints is what a flywheel question reduces.
-  const io::Mechanism mech = io::load_mechanism(path, [](const std::string&) { return nullptr; });
+gd::InertiaTable mechanism_inertia_table(const std::string& path, int intervals, const io::SourceMark& where,
+                                         const mechanism::ElementTypeLookup& elements) {
+  const mechanism::Mechanism mech = mechanism::load_mechanism(path, elements);
   const kin::Model& model = mech.model;
   if (model.drivers().empty() || model.drivers().front().quantity != kin::DriverQuantity::angle)
     io::fail_at(where, fmt::format("mechanism '{}': expected its first driver to be an angle (the load shaft)", path));

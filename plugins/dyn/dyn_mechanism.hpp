@@ -3,6 +3,7 @@
 // linkage at its driving shaft, tabulated over one turn from the solver's velocity coefficients.
 #include <gearkit/dyn/reduction.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/mechanism/element_type.hpp>
 
 #include <string>
 
@@ -13,10 +14,11 @@ namespace gearkit::plugins::dyn {
 /// shaft. The driver turns one revolution from 0 in `intervals` steps; the solver keeps the
 /// assembly branch of the drawing.
 /// @param where the model-file position that named the mechanism, for messages
-/// @throws io::InputError if the file is bad (its own file:line:column), uses plugin elements,
-///         has no angle driver, has no link with mass, or cannot turn a full revolution (a dead
-///         point on the way).
+/// @param elements the host's element types (gear meshes, cam followers, epicyclic trains)
+/// @throws io::InputError if the file is bad (its own file:line:column), has no angle driver,
+///         has no link with mass, or cannot turn a full revolution (a dead point on the way).
 gearkit::dyn::InertiaTable mechanism_inertia_table(const std::string& path, int intervals,
-                                                   const io::SourceMark& where);
+                                                   const io::SourceMark& where,
+                                                   const mechanism::ElementTypeLookup& elements);
 
 }  // namespace gearkit::plugins::dyn

@@ -151,7 +151,7 @@ void read_stages(io::MapReader& root, Model& m) {
   }
 }
 
-void read_load(io::MapReader& root, Model& m) {
+void read_load(io::MapReader& root, Model& m, const mechanism::ElementTypeLookup& elements) {
   if (!root.has("load")) return;
   io::MapReader r = root.map("load");
   m.load.mark = r.mark();
@@ -175,7 +175,7 @@ void read_load(io::MapReader& root, Model& m) {
     if (intervals < 36 || intervals > 36000)
       io::fail_at(r.mark("mechanism_steps"), fmt::format("'mechanism_steps': expected 36 to 36000, found {}", intervals));
     m.load.inertia_table.emplace(
-        mechanism_inertia_table(path.string(), static_cast<int>(intervals), m.load.inertia_table_mark));
+        mechanism_inertia_table(path.string(), static_cast<int>(intervals), m.load.inertia_table_mark, elements));
   }
   if (r.has("inertia_table")) {
     m.load.inertia_table_mark = r.mark("inertia_table");
@@ -323,7 +323,7 @@ void read_reduced_force(io::MapReader& root, Model& m) {
 
 }  // namespace
 
-Model load_model(const std::string& path) {
+Model load_model(const std::string& path, const mechanism::ElementTypeLookup& elements) {
   const io::YamlDocument doc = io::load_yaml_file(path);
   io::MapReader root(doc.root, doc.file, "dyn model");
   Model m;
@@ -332,7 +332,7 @@ Model load_model(const std::string& path) {
   m.has_drive_line = root.has("motor") || root.has("stages") || root.has("load");
   read_motor(root, m);
   read_stages(root, m);
-  read_load(root, m);
+  read_load(root, m, elements);
   read_flywheel(root, m);
   read_energy(root, m);
   read_motion(root, m);

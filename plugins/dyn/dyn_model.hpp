@@ -6,6 +6,7 @@
 #include <gearkit/dyn/drive_line.hpp>
 #include <gearkit/dyn/reduction.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/mechanism/element_type.hpp>
 
 #include <functional>
 #include <map>
@@ -113,7 +114,9 @@ struct Model {
   std::optional<ReducedForceQuestion> reduced_force;
 };
 
-/// Reads and checks a model file. @throws io::InputError (file:line:column) on bad input.
-Model load_model(const std::string& path);
+/// Reads and checks a model file; `elements` finds the element types of a load's mechanism
+/// file (the host's, so that every mechanism `gearkit kin` reads works here too).
+/// @throws io::InputError (file:line:column) on bad input.
+Model load_model(const std::string& path, const mechanism::ElementTypeLookup& elements);
 
 }  // namespace gearkit::plugins::dyn

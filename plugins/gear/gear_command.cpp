@@ -119,7 +119,7 @@ void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, con
 
 }  // namespace
 
-int run_gear_command(kin::CommandContext& context) {
+int run_gear_command(plugin::CommandContext& context) {
   if (!context.args.empty() && context.args.front() == "size") return run_gear_size_command(context);
   io::po::options_description desc("gearkit gear options (bare numbers: mm and deg; rating: N*m, kW, rpm, h, um)");
   add_gear_options(desc);

@@ -109,7 +109,7 @@ io::Report sizing_report(const gg::SizingInput& in, const gg::SizingResult& r) {
 
 }  // namespace
 
-int run_gear_size_command(kin::CommandContext& context) {
+int run_gear_size_command(plugin::CommandContext& context) {
   io::po::options_description desc("gearkit gear size options");
   add_rating_options(desc);
   auto text = [] { return io::po::value<std::string>(); };

@@ -358,7 +358,7 @@ void add_assembly(io::Report& report, const gt::TrainModel& model, double tolera
 
 }  // namespace
 
-int run_train_command(kin::CommandContext& context) {
+int run_train_command(plugin::CommandContext& context) {
   if (!context.args.empty() && context.args.front() == "synth")
     return run_train_synth_command(context, {context.args.begin() + 1, context.args.end()});
 

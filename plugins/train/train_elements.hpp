@@ -1,9 +1,9 @@
 #pragma once
-#include <gearkit/kin/plugin.hpp>
+#include <gearkit/plugin/plugin.hpp>
 
 namespace gearkit::plugins::train {
 
-/// Registers this plugin's element types for mechanism models (see gearkit/kin/element.hpp).
-void register_elements(kin::PluginRegistrar& registrar);
+/// Registers this plugin's element types for mechanism files (epicyclic_train).
+void register_elements(plugin::PluginRegistrar& registrar);
 
 }  // namespace gearkit::plugins::train

@@ -97,7 +97,7 @@ void add_common_synth_options(po::options_description& desc) {
       ("max-results", po::value<long long>()->value_name("N"), "candidates listed (default 20)");
 }
 
-int run_reducer(kin::CommandContext& context, const po::variables_map& vm, const io::CommonOptions& common) {
+int run_reducer(plugin::CommandContext& context, const po::variables_map& vm, const io::CommonOptions& common) {
   gt::CoaxialReducerSpec spec;
   spec.module_1_mm = module_option(vm, "m1");
   spec.module_2_mm = module_option(vm, "m2");
@@ -137,7 +137,7 @@ int run_reducer(kin::CommandContext& context, const po::variables_map& vm, const
   return io::emit(report, common, context.out);
 }
 
-int run_planetary(kin::CommandContext& context, const po::variables_map& vm, const io::CommonOptions& common) {
+int run_planetary(plugin::CommandContext& context, const po::variables_map& vm, const io::CommonOptions& common) {
   gt::PlanetarySpec spec;
   if (!vm.count("ratio")) io::fail_option("--ratio", "missing: the target ratio w_out/w_in, e.g. 1/4");
   spec.target_ratio = parse_ratio(vm["ratio"].as<std::string>());
@@ -184,7 +184,7 @@ int run_planetary(kin::CommandContext& context, const po::variables_map& vm, con
 
 }  // namespace
 
-int run_train_synth_command(kin::CommandContext& context, const std::vector<std::string>& args) {
+int run_train_synth_command(plugin::CommandContext& context, const std::vector<std::string>& args) {
   po::options_description desc("gearkit train synth options");
   add_common_synth_options(desc);
   desc.add_options()

@@ -75,15 +75,44 @@ TEST(Cli, PluginPathLoadsAPluginAndReportsBrokenOnes) {
   auto r = run_gearkit("hello-test x y", env);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "hello from test plugin x y\n");
+  EXPECT_TRUE(r.err.empty()) << r.err;
 
-  // A folder with plugins built wrongly: each named on stderr; the rest keeps working.
-  auto all = run_gearkit("hello-test", "GEARKIT_PLUGIN_PATH=" + shell_quote(kTestPlugins));
+  // A folder with a good plugin and two broken ones: each broken one costs every other command
+  // exactly one warning line, and the rest keeps working.
+  const auto dir = gearkit::testing::scratch_dir("cli_plugin_path");
+  for (const char* name : {"good", "wrong_api", "builtin_command"})
+    std::filesystem::copy_file(kTestPlugins + "/test-" + name + ".so", dir / (std::string(name) + ".so"));
+  const std::string path = "GEARKIT_PLUGIN_PATH=" + shell_quote(dir.string());
+  auto all = run_gearkit("hello-test", path);
   EXPECT_EQ(all.status, 0);
-  EXPECT_NE(all.err.find("test-wrong_api.so"), std::string::npos) << all.err;
-  EXPECT_NE(all.err.find("test-missing_symbol.so"), std::string::npos) << all.err;
-  auto listing = run_gearkit("plugins --format json", "GEARKIT_PLUGIN_PATH=" + shell_quote(kTestPlugins));
-  EXPECT_EQ(listing.status, 2);  // `gearkit plugins` says loudly that something failed to load
-  EXPECT_EQ(nlohmann::json::parse(listing.out)["errors"].size(), 2u);
+  EXPECT_EQ(all.out, "hello from test plugin\n");
+  EXPECT_EQ(gearkit::testing::count_lines(all.err), 2) << all.err;
+  EXPECT_EQ(all.err.rfind("gearkit: warning: plugin '", 0), 0u) << all.err;
+  EXPECT_NE(all.err.find("builtin_command.so': registers the command 'kin', which is built into gearkit (not loaded)\n"),
+            std::string::npos) << all.err;
+  EXPECT_NE(all.err.find("wrong_api.so': built for plugin API version"), std::string::npos) << all.err;
+
+  // Built-ins always win: `kin` is gearkit's own.
+  auto kin = run_gearkit("kin --help", path);
+  EXPECT_EQ(kin.status, 0);
+  EXPECT_NE(kin.out.find("gearkit kin options"), std::string::npos) << kin.out;
+
+  // `gearkit plugins` names every failure with its reason and exits 2, one line per failure on
+  // stderr (the last one a reason).
+  auto listing = run_gearkit("plugins --format json", path);
+  EXPECT_EQ(listing.status, 2);
+  const auto j = nlohmann::json::parse(listing.out);
+  ASSERT_EQ(j["errors"].size(), 2u);
+  EXPECT_NE(j["errors"][0]["reason"].get<std::string>().find("built into gearkit"), std::string::npos);
+  int good = 0;
+  for (const auto& p : j["plugins"]) good += p["name"] == "test-good";
+  EXPECT_EQ(good, 1);
+  EXPECT_EQ(gearkit::testing::count_lines(listing.err), 2) << listing.err;
+  const std::string last = listing.err.substr(listing.err.rfind('\n', listing.err.size() - 2) + 1);
+  EXPECT_EQ(last.rfind("gearkit: plugin '", 0), 0u) << last;
+  EXPECT_NE(last.find("wrong_api.so': built for plugin API version"), std::string::npos) << last;
+  auto text = run_gearkit("plugins", path);
+  EXPECT_NE(text.out.find("Failed to load"), std::string::npos) << text.out;
 }
 
 TEST(Cli, OutputFileIsWrittenAtomically) {

@@ -66,6 +66,35 @@ TEST(DynMechanism, SameFlywheelAsTheHandTabulatedModel) {
   EXPECT_NEAR(ja["energy_excursion_J"].get<double>(), jb["energy_excursion_J"].get<double>(), 1e-6);
 }
 
+// The dyn plugin reads mechanisms with element types of other plugins through the host (issue
+// 12): a cam follower. examples/dynamics/cam_rocker_mechanism.yaml reduces to
+// I(theta) = I_cam + I_rocker psi'^2 with I_cam = 0.002, I_rocker = 0.05 kg m^2 and the rocker's
+// program (cycloidal rise and 3-4-5 return of h = 20 deg over beta = 120 deg each): minimum
+// I_cam in the dwells, maximum I_cam + I_rocker (2 h/beta)^2 = I_cam + I_rocker/9 at mid-rise, mean
+// I_cam + I_rocker (h^2/beta)(3/2 + 10/7)/(2 pi) (integrals of psi'^2: 3/2 h^2/beta for the
+// cycloid, 900 B(5,5) h^2/beta = 10/7 h^2/beta for the 3-4-5 polynomial).
+TEST(DynMechanism, CamFollowerMechanismThroughTheHost) {
+  const auto r = run_gearkit("dyn " + example("cam_rocker_machine.yaml") + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double h = 20 * pi / 180, beta = 120 * pi / 180, I_cam = 0.002, I_rocker = 0.05;
+  EXPECT_NEAR(j["linkage_inertia_min_kgm2"].get<double>(), I_cam, 1e-12);
+  EXPECT_NEAR(j["linkage_inertia_max_kgm2"].get<double>(), I_cam + I_rocker / 9, 1e-12);
+  EXPECT_NEAR(j["linkage_inertia_mean_kgm2"].get<double>(),
+              I_cam + I_rocker * h * h / beta * (1.5 + 10.0 / 7.0) / (2 * pi), 1e-9);
+}
+
+// And a gear mesh: pinion 0.01 kg m^2 (z = 20) and gear 0.2 kg m^2 (z = 40) reduce to
+// I = 0.01 + 0.2 (20/40)^2 = 0.06 kg m^2 at every angle.
+TEST(DynMechanism, GearMeshMechanismThroughTheHost) {
+  const auto r = run_gearkit("dyn " + example("geared_drive_machine.yaml") + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["linkage_inertia_min_kgm2"].get<double>(), 0.06, 1e-12);
+  EXPECT_NEAR(j["linkage_inertia_max_kgm2"].get<double>(), 0.06, 1e-12);
+}
+
 TEST(DynMechanism, BadMechanismReferencesAreInputErrors) {
   const auto dir = gearkit::testing::scratch_dir("dyn_mechanism");
   const std::string model = "motor: {speed: 1450 rpm}\nstages:\n  - {ratio: 1/10}\nload:\n  mechanism: MECH\n"

@@ -12,14 +12,19 @@ cmake --install "$build" --prefix "$prefix" > "$scratch/install.log"
 # The installed tree has what the issue asks for.
 for f in bin/gearkit lib/gearkit/plugins/gearkit-gear.so lib/gearkit/plugins/gearkit-train.so \
          lib/gearkit/plugins/gearkit-cam.so lib/cmake/gearkit/gearkitConfig.cmake \
-         include/gearkit/kin/plugin.hpp include/gearkit/io/report.hpp; do
+         include/gearkit/plugin/plugin.hpp include/gearkit/mechanism/element_type.hpp include/gearkit/io/report.hpp; do
   [ -e "$prefix/$f" ] || { echo "missing in install: $f"; exit 1; }
 done
 
-cmake -S "$src" -B "$scratch/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release > "$scratch/configure.log"
+cmake -S "$src" -B "$scratch/build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_EXPORT_COMPILE_COMMANDS=ON > "$scratch/configure.log"
 cmake --build "$scratch/build" > "$scratch/build.log"
 plugin=$(find "$scratch/build" -name 'gearkit-hello.so' | head -n 1)
 [ -n "$plugin" ] || { echo "plugin was not built"; exit 1; }
+# A plugin of commands only needs neither the solver nor Eigen (issue 12): not linked, not even
+# on its include path.
+if readelf -d "$plugin" | grep -q 'NEEDED.*libgearkit_kin'; then echo "plugin-hello links libgearkit_kin"; exit 1; fi
+if grep -q -i 'eigen3' "$scratch/build/compile_commands.json"; then echo "plugin-hello compiles with Eigen"; exit 1; fi
 
 out=$(GEARKIT_PLUGIN_PATH="$(dirname "$plugin")" "$prefix/bin/gearkit" hello --name Ada)
 [ "$out" = "hello, Ada

@@ -1,12 +1,23 @@
-// A plugin that claims another API version: the host must refuse it before calling anything else.
-#include <gearkit/kin/plugin.hpp>
+// A plugin stamped with another API version: the host must refuse it from the file, before
+// loading it (its static constructor must never run).
+#include "marker.hpp"
 
-GEARKIT_PLUGIN_EXPORT int gearkit_plugin_api_version() { return gearkit::kin::kPluginApiVersion + 41; }
-GEARKIT_PLUGIN_EXPORT const gearkit::kin::PluginInfo* gearkit_plugin_info() {
-  static const gearkit::kin::PluginInfo info{"test-wrong-api", "1.0", "built for another API"};
+#include <gearkit/plugin/plugin.hpp>
+
+GEARKIT_TEST_MARKER("wrong_api")
+
+extern "C" {
+extern const gearkit::plugin::PluginStamp gearkit_plugin_stamp;
+__attribute__((visibility("default"), used, section(".gearkit_plugin"))) const gearkit::plugin::PluginStamp
+    gearkit_plugin_stamp = {{'g', 'e', 'a', 'r', 'k', 'i', 't', '\0'},
+                            gearkit::plugin::kApiVersion + 41,
+                            sizeof(gearkit::plugin::PluginStamp),
+                            gearkit::plugin::kCommandAbi};
+}
+GEARKIT_PLUGIN_EXPORT const gearkit::plugin::PluginInfo* gearkit_plugin_info() {
+  static const gearkit::plugin::PluginInfo info{"test-wrong-api", "1.0", "built for another API"};
   return &info;
 }
-GEARKIT_PLUGIN_EXPORT void gearkit_plugin_register(gearkit::kin::PluginRegistrar&) {
-  // Must never be called: the host checks the version first.
-  __builtin_trap();
+GEARKIT_PLUGIN_EXPORT void gearkit_plugin_register(gearkit::plugin::PluginRegistrar&) {
+  __builtin_trap();  // must never be called
 }

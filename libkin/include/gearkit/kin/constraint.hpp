@@ -16,6 +16,7 @@
 // Columns of a kGround entry are ignored by the assembler.
 #include <Eigen/Core>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -64,6 +65,31 @@ struct ConstraintOutput {
   Eigen::Ref<Eigen::VectorXd> gamma;
 };
 
+/// One quantity a constraint reports with its reaction, e.g. a gear mesh's normal tooth force.
+struct ReactionValue {
+  std::string symbol;       ///< as in the standards and textbooks, e.g. "F_n", "T_2"
+  std::string unit;         ///< SI: "N", "N m"
+  double value = 0.0;       ///< [unit]
+  std::string description;  ///< one line: "normal tooth force (ISO 6336-1)"
+};
+
+/// What a constraint transmits at a solved configuration, worked out from its multipliers.
+struct Reaction {
+  /// Force on the constraint's first body from the others [N], ground frame.
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();
+  /// Moment on the first body [N m], counter-clockwise positive: about `at` when it is set,
+  /// else about the body's frame origin.
+  double moment = 0.0;
+  /// Where `force` acts and `moment` is taken [m], ground frame, when the constraint joins its
+  /// bodies at a point (revolute, pin in slot, prismatic).
+  std::optional<Eigen::Vector2d> at;
+  /// True when the constraint transmits only a force through `at`, never a moment (a pin): the
+  /// kinetostatics then knows the line of the force (two-force members).
+  bool pin = false;
+  /// The quantities the element names (tooth forces, contact forces...), SI.
+  std::vector<ReactionValue> values;
+};
+
 /// A set of scleronomic or rheonomic equations between the coordinates of a few bodies.
 class Constraint {
  public:
@@ -81,6 +107,12 @@ class Constraint {
   virtual bool is_driver() const { return false; }
   /// Evaluates the rows at `in`. Must not throw and must not allocate on the heap.
   virtual void evaluate(const ConstraintInput& in, ConstraintOutput& out) const = 0;
+  /// The reaction for the multipliers `lambda` (one per equation) at the solved state `in`. The
+  /// constraint applies the generalised forces -Phi_q^T lambda to its bodies. The default gives
+  /// that force and moment (about the frame origin) on the first body and names no values;
+  /// elements override it to report what an engineer reads (tooth force, contact force).
+  /// May allocate; called once per reported position, not in the solver loops.
+  virtual Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const;
 };
 
 // Small helpers shared by the built-in constraints and the plugins' elements.

@@ -1,42 +1,25 @@
 #pragma once
-// Element types that plugins contribute to the solver (gear mesh, epicyclic train, cam
-// follower). The solver sees an element only through the constraint interface: its rows of
-// Phi, Phi_q, Phi_t and gamma (see constraint.hpp). The element's own description in a
-// mechanism file is read by the plugin that owns the type.
-#include <gearkit/kin/joints.hpp>
-#include <functional>
-#include <memory>
+// What the typed element builders share (gearkit/elements/*.hpp and plugins' own elements): the
+// error for impossible parameters. An element is a Constraint (constraint.hpp) built from a
+// typed parameter struct by a C++ function; reading it from a mechanism file is the business of
+// the reader layer (gearkit::mechanism), never of the solver.
+#include <stdexcept>
 #include <string>
-
-namespace YAML {
-class Node;
-}
 
 namespace gearkit::kin {
 
-class Constraint;
+/// Parameters that make no element: a body index out of range or repeated where bodies must
+/// differ, a tooth number below 1, an angle outside its range... field() names the parameter
+/// with the spelling of its key in mechanism files ("z1", "gear2", "pressure_angle"), so a reader
+/// can point at the offending key.
+class ElementError : public std::invalid_argument {
+ public:
+  ElementError(std::string field, const std::string& message);
+  ~ElementError() override;
+  const std::string& field() const { return field_; }
 
-/// What a plugin's element factory is given to build one element of a mechanism model.
-struct ElementRequest {
-  const YAML::Node& node;   ///< the element's mapping in the mechanism file
-  const std::string& file;  ///< the file, for error marks
-  /// Index of a body by name (kGround for "ground"); throws gearkit::io::InputError for an
-  /// unknown name.
-  std::function<int(const std::string& body_name)> body_index;
-  /// Resolves a "link.point" scalar node to the body and the point's local coordinates [m];
-  /// throws gearkit::io::InputError (with the node's file:line:column) if either is unknown.
-  std::function<BodyPoint(const YAML::Node& reference)> body_point;
-  /// The drawn (initial guess) angle of a body [rad]; 0 for the ground. Elements whose
-  /// equations hold up to a constant (a gear mesh's phase) take it from the drawing.
-  std::function<double(int body)> angle_guess;
-};
-
-using ElementFactory = std::function<std::unique_ptr<Constraint>(const ElementRequest&)>;
-
-struct ElementTypeSpec {
-  std::string name;        ///< the `type:` word in a mechanism file, e.g. "gear_mesh"
-  std::string summary;     ///< one line for `gearkit plugins`
-  ElementFactory create;   ///< builds the element's constraint
+ private:
+  std::string field_;
 };
 
 }  // namespace gearkit::kin

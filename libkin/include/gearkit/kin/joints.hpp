@@ -14,7 +14,7 @@ struct BodyPoint {
 
 /// Revolute (pin) joint: point a of one body coincides with point b of another. 2 equations:
 /// Phi = r_a - r_b. The multiplier is the force [N] that body b exerts on body a, with the
-/// sign convention F_on_a = -lambda.
+/// sign convention F_on_a = -lambda; reaction() gives that force at the joint point (a pin).
 class Revolute final : public Constraint {
  public:
   Revolute(BodyPoint a, BodyPoint b) : a_(a), b_(b) {}
@@ -22,6 +22,7 @@ class Revolute final : public Constraint {
   int equations() const override { return 2; }
   std::vector<int> bodies() const override { return {a_.body, b_.body}; }
   void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const override;
   const BodyPoint& a() const { return a_; }
   const BodyPoint& b() const { return b_; }
 
@@ -33,6 +34,8 @@ class Revolute final : public Constraint {
 /// body, with the direction `axis_local` (a unit vector in the guide body's frame); the two
 /// bodies keep the relative angle `relative_angle` [rad] = theta_slider - theta_guide.
 /// 2 equations: theta_s - theta_g - relative_angle = 0 and n . (P - Q) = 0, n normal to the axis.
+/// reaction(): the guide's normal force -lambda_2 n on the slider at P and its moment -lambda_1
+/// about P.
 class Prismatic final : public Constraint {
  public:
   Prismatic(BodyPoint slider, BodyPoint guide, Eigen::Vector2d axis_local, double relative_angle);
@@ -40,6 +43,7 @@ class Prismatic final : public Constraint {
   int equations() const override { return 2; }
   std::vector<int> bodies() const override { return {slider_.body, guide_.body}; }
   void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const override;
   const BodyPoint& slider() const { return slider_; }
   const BodyPoint& guide() const { return guide_; }
   const Eigen::Vector2d& axis_local() const { return axis_; }
@@ -52,6 +56,7 @@ class Prismatic final : public Constraint {
 
 /// Pin in slot (the two-freedom half joint): point P of `pin` body stays on the line through
 /// point Q of `slot` body with direction `axis_local` (slot body's frame). 1 equation.
+/// reaction(): the slot's normal force -lambda n on the pin at P (a pin: no moment).
 class PinInSlot final : public Constraint {
  public:
   PinInSlot(BodyPoint pin, BodyPoint slot, Eigen::Vector2d axis_local);
@@ -59,6 +64,7 @@ class PinInSlot final : public Constraint {
   int equations() const override { return 1; }
   std::vector<int> bodies() const override { return {pin_.body, slot_.body}; }
   void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const override;
 
  private:
   BodyPoint pin_, slot_;

@@ -10,18 +10,24 @@
 //     E_k + Q* . dq_k = 0,
 // and also E_k = -lambda_k (its multiplier). The two are computed independently.
 #include <gearkit/kin/data.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace gearkit::kin {
 
-/// The reaction carried by one constraint, as the force and moment it exerts on its first body.
+/// The reaction carried by one constraint (Constraint::reaction), as the force and moment it
+/// exerts on its first body, and the quantities the constraint names (an element's tooth or
+/// contact force).
 struct ConstraintReaction {
   int constraint = 0;
   std::string name, kind;
   int body = kGround;                          ///< the first body of the constraint
-  Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< revolute: on `body` from its partner [N]
-  double moment = 0.0;                         ///< prismatic: moment on the slider about its point [N m]
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< on `body` from the others [N]
+  double moment = 0.0;  ///< on `body` [N m], about `at` if set (a prismatic's slider point)
+  std::optional<Eigen::Vector2d> at;           ///< where the force acts [m] (joints)
+  bool pin = false;                            ///< a force through `at` only (revolute, pin in slot)
+  std::vector<ReactionValue> values;           ///< named by the constraint, SI
   Eigen::VectorXd lambda;                      ///< the raw multipliers of its rows
 };
 

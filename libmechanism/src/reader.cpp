@@ -1,4 +1,6 @@
-#include <gearkit/io/mechanism_yaml.hpp>
+#include <gearkit/mechanism/reader.hpp>
+
+#include "references.hpp"
 
 #include <gearkit/kin/constraint.hpp>
 #include <gearkit/kin/joints.hpp>
@@ -8,10 +10,16 @@
 #include <map>
 #include <set>
 
-namespace gearkit::io {
+namespace gearkit::mechanism {
 
 namespace {
 
+using io::fail_at;
+using io::mark_of;
+using io::MapReader;
+using io::Quantity;
+using io::scalar_quantity;
+using io::scalar_text;
 using kin::BodyPoint;
 using kin::kGround;
 
@@ -31,7 +39,7 @@ Eigen::Vector2d read_xy(const YAML::Node& node, const std::string& file, Quantit
 // Builds the model step by step, remembering where each link was declared.
 class Reader {
  public:
-  Reader(const YamlDocument& doc, const ElementTypeLookup& elements) : doc_(doc), elements_(elements) {}
+  Reader(const io::YamlDocument& doc, const ElementTypeLookup& elements) : doc_(doc), elements_(elements) {}
 
   Mechanism read() {
     MapReader root(doc_.root, doc_.file, "mechanism");
@@ -115,23 +123,11 @@ class Reader {
 
   // "link.point" -> body and local coordinates.
   BodyPoint point_ref(const YAML::Node& node) const {
-    const std::string text = scalar(node, doc_.file, "a point reference 'link.point'");
-    const auto dot = text.find('.');
-    if (dot == std::string::npos) fail(node, "expected a point reference 'link.point', found '" + text + "'");
-    const std::string link = text.substr(0, dot), point = text.substr(dot + 1);
-    const auto body = mech_.model.body_index(link);
-    if (!body) fail(node, "unknown link '" + link + "' in '" + text + "'");
-    const kin::Body& b = *body == kGround ? mech_.model.ground() : mech_.model.bodies()[static_cast<std::size_t>(*body)];
-    const auto local = b.point(point);
-    if (!local) fail(node, "link '" + link + "' has no point '" + point + "'");
-    return {*body, *local};
+    return resolve_point(mech_.model, scalar(node, doc_.file, "a point reference 'link.point'"), mark_of(node, doc_.file));
   }
 
   int link_ref(const YAML::Node& node) const {
-    const std::string text = scalar(node, doc_.file, "a link name");
-    const auto body = mech_.model.body_index(text);
-    if (!body) fail(node, "unknown link '" + text + "'");
-    return *body;
+    return resolve_link(mech_.model, scalar(node, doc_.file, "a link name"), mark_of(node, doc_.file));
   }
 
   std::string unique_name(std::optional<std::string> name, const std::string& prefix, const YAML::Node& node) {
@@ -154,7 +150,7 @@ class Reader {
 
   void read_joint(const YAML::Node& node) {
     MapReader j(node, doc_.file, "joint");
-    const std::string type = j.choice("type", {"revolute", "prismatic", "pin_in_slot"});
+    const std::string type = j.choice("type", builtin_joint_types());
     const std::string name = unique_name(j.optional_string("name"), type, node);
     if (type == "revolute") {
       const std::vector<YAML::Node> at = j.sequence("at");
@@ -213,23 +209,24 @@ class Reader {
   }
 
   void read_element(const YAML::Node& node) {
-    if (!node.IsMap()) fail(node, "expected an element as a mapping with 'type', found something else");
-    if (!node["type"]) fail(node, "expected the element's 'type' (an element type from a plugin)");
-    const std::string type = scalar(node["type"], doc_.file, "an element type");
-    const kin::ElementTypeSpec* spec = elements_ ? elements_(type) : nullptr;
-    if (!spec || !spec->create)
-      fail(node["type"], "unknown element type '" + type + "' (no loaded plugin provides it; see `gearkit plugins`)");
-    const std::string name = unique_name(node["name"] ? std::optional(scalar(node["name"], doc_.file, "a name")) : std::nullopt, type, node);
-    kin::ElementRequest request{node, doc_.file,
-                                [this, &node](const std::string& body) {
-                                  const auto b = mech_.model.body_index(body);
-                                  if (!b) fail(node, "unknown link '" + body + "'");
-                                  return *b;
-                                },
-                                [this](const YAML::Node& ref) { return point_ref(ref); },
-                                [this](int body) { return angle_of(body); }};
-    std::unique_ptr<kin::Constraint> c = spec->create(request);
+    MapReader keys(node, doc_.file, "element");
+    const std::string type = keys.string("type");
+    const ElementTypeSpec* spec = elements_ ? elements_(type) : nullptr;
+    if (!spec || !spec->read)
+      fail_at(keys.mark("type"), "unknown element type '" + type + "' (no loaded plugin provides it; see `gearkit plugins`)");
+    const std::string name = unique_name(keys.optional_string("name"), type, node);
+    MapReader element(node, doc_.file, type + " '" + name + "'");
+    element.string("type");
+    element.optional_string("name");
+    ElementReader reader(element, mech_.model);
+    std::unique_ptr<kin::Constraint> c;
+    try {
+      c = spec->read(reader);
+    } catch (const kin::ElementError& e) {
+      fail_at(element.mark(e.field()), e.what());
+    }
     if (!c) fail(node, "element type '" + type + "' built nothing");
+    element.finish();
     add(name, std::shared_ptr<const kin::Constraint>(std::move(c)), node);
   }
 
@@ -354,7 +351,7 @@ class Reader {
     mech_.outputs.push_back(o);
   }
 
-  const YamlDocument& doc_;
+  const io::YamlDocument& doc_;
   const ElementTypeLookup& elements_;
   Mechanism mech_;
   std::vector<YAML::Node> link_nodes_;
@@ -369,12 +366,17 @@ class Reader {
 
 }  // namespace
 
-Mechanism read_mechanism(const YamlDocument& document, const ElementTypeLookup& elements) {
+const std::vector<std::string>& builtin_joint_types() {
+  static const std::vector<std::string> types{"revolute", "prismatic", "pin_in_slot"};
+  return types;
+}
+
+Mechanism read_mechanism(const io::YamlDocument& document, const ElementTypeLookup& elements) {
   return Reader(document, elements).read();
 }
 
 Mechanism load_mechanism(const std::string& path, const ElementTypeLookup& elements) {
-  return read_mechanism(load_yaml_file(path), elements);
+  return read_mechanism(io::load_yaml_file(path), elements);
 }
 
-}  // namespace gearkit::io
+}  // namespace gearkit::mechanism

@@ -1,6 +1,6 @@
-// The mechanism file reader (libio/include/gearkit/io/mechanism_yaml.hpp): structure, units,
-// placement of the first guess, and errors with file:line:column.
-#include <gearkit/io/mechanism_yaml.hpp>
+// The mechanism file reader (gearkit/mechanism/reader.hpp): structure, units, placement of the
+// first guess, and errors with file:line:column.
+#include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/dof.hpp>
 #include <gearkit/kin/solve.hpp>
 
@@ -8,8 +8,10 @@
 
 #include <cmath>
 
-namespace gearkit::io {
+namespace gearkit::mechanism {
 namespace {
+
+using io::load_yaml_text;
 
 const char* kSliderCrank = R"(mechanism: slider-crank
 ground:
@@ -44,7 +46,7 @@ Mechanism read(const std::string& text) { return read_mechanism(load_yaml_text(t
 std::string error_of(const std::string& text) {
   try {
     read(text);
-  } catch (const InputError& e) {
+  } catch (const io::InputError& e) {
     return e.what();
   }
   return "";
@@ -103,4 +105,4 @@ TEST(MechanismYaml, ErrorsNameFileLineAndColumn) {
 }
 
 }  // namespace
-}  // namespace gearkit::io
+}  // namespace gearkit::mechanism

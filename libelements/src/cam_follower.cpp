@@ -1,0 +1,102 @@
+#include <gearkit/elements/cam_follower.hpp>
+
+#include "checks.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace gearkit::elements {
+
+namespace {
+
+class CamFollower final : public kin::Constraint {
+ public:
+  CamFollower(const CamFollowerParameters& p, cam::MotionProgram program)
+      : translating_(p.path == FollowerPath::translating),
+        follower_(translating_ ? p.point : kin::BodyPoint{p.follower, {}}),
+        guide_(translating_ ? p.guide : kin::BodyPoint{p.relative_to, {}}),
+        axis_(std::cos(p.axis), std::sin(p.axis)), cam_(p.cam), cam_zero_(p.cam_zero),
+        sigma_(p.clockwise ? -1.0 : 1.0), base_(p.base), program_(std::move(program)) {}
+
+  std::string kind() const override { return "cam_follower"; }
+  int equations() const override { return 1; }
+  std::vector<int> bodies() const override { return {follower_.body, guide_.body, cam_}; }
+
+  void evaluate(const kin::ConstraintInput& in, kin::ConstraintOutput& out) const override {
+    const kin::BodyState& cam = in.bodies[2];
+    const cam::Motion s = program_.at(sigma_ * (cam.theta - cam_zero_));
+    if (translating_) {
+      kin::projection_row(in, follower_.local, guide_.local, axis_, 0, out);
+    } else {
+      out.phi(0) = in.bodies[0].theta - in.bodies[1].theta;
+      out.phi_q.setZero();
+      out.phi_q(0, 2) = 1.0;
+      out.phi_q(0, 5) = -1.0;
+      out.phi_t(0) = 0.0;
+      out.gamma(0) = 0.0;
+    }
+    out.phi(0) -= base_ + s.s;
+    out.phi_q(0, 6) = 0.0;
+    out.phi_q(0, 7) = 0.0;
+    out.phi_q(0, 8) = -sigma_ * s.ds;
+    // d2/dt2 s(sigma theta) = s'' omega^2 + sigma s' theta_dd; the first term goes to gamma.
+    out.gamma(0) += s.d2s * cam.omega * cam.omega;
+  }
+
+  kin::Reaction reaction(const kin::ConstraintInput& in, std::span<const double> lambda) const override {
+    const double l = lambda[0];
+    const cam::Motion s = program_.at(sigma_ * (in.bodies[2].theta - cam_zero_));
+    kin::Reaction r;
+    if (translating_) {
+      r.force = -l * in.bodies[1].rotated(axis_);
+      r.values.push_back({"F", "N", -l, "force of the cam on the follower along its guide"});
+    } else {
+      r.moment = -l;
+      r.values.push_back({"T_f", "N m", -l, "torque of the cam on the follower about its pivot"});
+    }
+    r.values.push_back({"T_cam", "N m", sigma_ * s.ds * l, "torque of the follower on the cam"});
+    return r;
+  }
+
+ private:
+  bool translating_;
+  kin::BodyPoint follower_, guide_;
+  Eigen::Vector2d axis_;
+  int cam_;
+  double cam_zero_, sigma_, base_;
+  cam::MotionProgram program_;
+};
+
+void check_parameters(const kin::Model& model, const CamFollowerParameters& p) {
+  check_body(model, p.cam, "cam", true);
+  if (p.path == FollowerPath::translating) {
+    check_body(model, p.point.body, "point", false);
+    check_body(model, p.guide.body, "guide", true);
+    if (p.point.body == p.cam) throw kin::ElementError("point", "expected the follower on another link than the cam");
+    if (p.point.body == p.guide.body) throw kin::ElementError("guide", "expected the guide on another link than the follower");
+  } else {
+    check_body(model, p.follower, "follower", false);
+    check_body(model, p.relative_to, "relative_to", true);
+    if (p.follower == p.cam) throw kin::ElementError("follower", "expected the follower on another link than the cam");
+    if (p.follower == p.relative_to)
+      throw kin::ElementError("relative_to", "expected the follower's angle relative to another link");
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<kin::Constraint> make_cam_follower(const kin::Model& model, const CamFollowerParameters& p) {
+  check_parameters(model, p);
+  try {
+    return std::make_unique<CamFollower>(p, cam::MotionProgram(p.motion));
+  } catch (const cam::ProgramError& e) {
+    throw kin::ElementError("motion", fmt::format("invalid cam program: {}", e.what()));
+  }
+}
+
+int add_cam_follower(kin::Model& model, std::string name, const CamFollowerParameters& p) {
+  return add_element(model, std::move(name), make_cam_follower(model, p));
+}
+
+}  // namespace gearkit::elements

@@ -1,0 +1,134 @@
+// `gearkit kin` reports what the elements of the plugins carry (Constraint::reaction): a gear
+// mesh's tooth forces and a cam follower's contact force, against hand calculations; and a bad
+// element parameter is placed at its key.
+#include <run_gearkit.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+namespace {
+
+using gearkit::testing::run_gearkit;
+using gearkit::testing::shell_quote;
+
+std::string write(const std::string& name, const std::string& text) {
+  const auto dir = gearkit::testing::scratch_dir("element_reactions_" + name);
+  std::ofstream(dir / name) << text;
+  return shell_quote((dir / name).string());
+}
+
+const nlohmann::json& reaction(const nlohmann::json& report, const std::string& name) {
+  for (const auto& r : report["positions"][0]["reactions"])
+    if (r["joint"] == name) return r;
+  throw std::runtime_error("no reaction " + name);
+}
+
+// Pinion z1 = 20 driven, gear z2 = 40 loaded with -10 N m, module 2 mm, alpha 20 deg (spur):
+// r2 = 40 mm, F_t = 10/0.04 = 250 N, F_r = 250 tan 20 deg = 90.9926 N, F_n = 250/cos 20 deg =
+// 266.0444 N; the pinion needs 5 N m (ISO 6336-1 nominal tangential load on the reference circle).
+TEST(ElementReactions, GearMeshToothForcesInTheKinReport) {
+  const std::string file = write("gears.yaml", R"(ground: {O1: [0, 0], O2: [60, 0]}
+links:
+  pinion: {points: {O1: [0, 0]}}
+  gear: {points: {O2: [0, 0]}}
+joints:
+  - {name: O1, type: revolute, at: [pinion.O1, ground.O1]}
+  - {name: O2, type: revolute, at: [gear.O2, ground.O2]}
+elements:
+  - {name: mesh, type: gear_mesh, gear1: pinion, gear2: gear, z1: 20, z2: 40, module: 2 mm}
+drivers:
+  - {name: input, type: angle, link: pinion, speed: 100 rpm}
+loads:
+  torques: [{link: gear, torque: -10 N*m}]
+)");
+  const auto r = run_gearkit("kin " + file + " --at 30 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& values = reaction(j, "mesh")["values"];
+  EXPECT_NEAR(values["F_t_N"].get<double>(), 250.0, 1e-9);
+  EXPECT_NEAR(values["F_r_N"].get<double>(), 90.99256, 1e-5);
+  EXPECT_NEAR(values["F_n_N"].get<double>(), 266.04444, 1e-5);
+  EXPECT_NEAR(values["T_2_Nm"].get<double>(), 10.0, 1e-9);
+  EXPECT_NEAR(std::abs(j["positions"][0]["driving_torque_Nm"].get<double>()), 5.0, 1e-9);
+  const auto text = run_gearkit("kin " + file + " --at 30");
+  EXPECT_NE(text.out.find("Element reactions"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("normal tooth force"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("266.044"), std::string::npos) << text.out;
+}
+
+// A flat-faced follower of 2 kg on a vertical guide, lifted by a cam at 10 rad/s with a simple
+// harmonic rise of 20 mm over 180 deg, under gravity and a 100 N load. At 60 deg: s'' = (h/2)
+// cos 60 deg = 5 mm/rad^2, a = s'' omega^2 = 0.5 m/s^2, so the contact force along the guide is
+// F = m (a + g) + 100 N = 2 (0.5 + 9.81) + 100 = 120.62 N (the face is normal to the guide, so
+// this is the whole contact force); the cam shaft torque is F s' = 120.62 (10 mm) sin 60 deg.
+TEST(ElementReactions, CamContactForceInTheKinReport) {
+  const std::string file = write("cam.yaml", R"(ground: {O: [0, 0], G: [0, 0]}
+links:
+  cam: {points: {O: [0, 0]}}
+  follower: {points: {P: [0, 0]}, position: [0, 55], mass: 2 kg, centre_of_mass: P}
+joints:
+  - {name: shaft, type: revolute, at: [cam.O, ground.O]}
+  - {name: guide, type: prismatic, slider: follower.P, guide: ground.G, axis: 90 deg}
+elements:
+  - name: contact
+    type: cam_follower
+    cam: cam
+    follower_type: translating
+    point: follower.P
+    guide: ground.G
+    axis: 90 deg
+    base: 50 mm
+    motion:
+      - {type: rise, from: 0 deg, to: 180 deg, law: simple_harmonic, lift: 20 mm}
+      - {type: return, from: 180 deg, to: 360 deg, law: simple_harmonic}
+drivers:
+  - {name: cam angle, type: angle, link: cam, speed: 10 rad/s}
+loads:
+  gravity: 9.81 m/s^2
+  forces: [{at: follower.P, force: [0, -100 N]}]
+)");
+  const auto r = run_gearkit("kin " + file + " --at 60 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& values = reaction(j, "contact")["values"];
+  EXPECT_NEAR(values["F_N"].get<double>(), 120.62, 1e-9);
+  const double torque = 120.62 * 0.010 * std::sin(60 * std::numbers::pi / 180);
+  EXPECT_NEAR(values["T_cam_Nm"].get<double>(), -torque, 1e-9);
+  EXPECT_NEAR(j["positions"][0]["driving_torque_Nm"].get<double>(), torque, 1e-9);
+}
+
+// A builder's complaint is placed at the key it names (kin::ElementError -> file:line:column).
+TEST(ElementReactions, BadElementParameterIsPlacedAtItsKey) {
+  const std::string file = write("bad.yaml", R"(ground: {O1: [0, 0], O2: [60, 0]}
+links:
+  pinion: {points: {O1: [0, 0]}}
+  ring: {points: {O2: [0, 0]}}
+joints:
+  - {name: O1, type: revolute, at: [pinion.O1, ground.O1]}
+  - {name: O2, type: revolute, at: [ring.O2, ground.O2]}
+elements:
+  - name: mesh
+    type: gear_mesh
+    gear1: pinion
+    gear2: ring
+    z1: 20
+    z2: 18
+    internal: true
+drivers:
+  - {name: input, type: angle, link: pinion}
+)");
+  const auto r = run_gearkit("kin " + file);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bad.yaml:14:9: 'z2': expected the internal gear 2 to have more teeth than gear 1 (20), found 18"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << r.err;
+}
+
+}  // namespace
