@@ -16,6 +16,7 @@ packages=(
   universal-ctags
   libslvs1-dev
   libmuparser-dev
+  libnlopt-dev
 )
 
 missing=()

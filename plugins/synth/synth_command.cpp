@@ -1,0 +1,106 @@
+// `gearkit synth TASK FILE`: linkage synthesis from a task file (docs/synthesis.md). Each task
+// reads its file, synthesises, checks the result with the solver, and writes the report, the
+// mechanism file for `gearkit kin`, a drawing and a chart.
+#include "synth_command.hpp"
+
+#include "synth_output.hpp"
+
+#include <gearkit/io/atomic_file.hpp>
+#include <gearkit/io/command_line.hpp>
+#include <gearkit/io/error.hpp>
+#include <gearkit/synth/function_generation.hpp>
+
+#include <fmt/format.h>
+
+#include <functional>
+#include <map>
+
+namespace gearkit::plugins::synth {
+
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr std::string_view usage =
+    "gearkit synth function|motion|path|crank-rocker|dwell FILE.yaml [--mechanism OUT.yaml] "
+    "[--drawing OUT.svg|OUT.dxf] [--plot OUT.svg] [--seed N] [--evaluations N] [--restarts N] "
+    "[--format text|json|csv|md] [--output FILE] [--strict]";
+
+using Task = std::function<Output(const io::YamlDocument&, const Overrides&)>;
+
+const std::map<std::string, Task>& tasks() {
+  static const std::map<std::string, Task> t{{"function", run_function_task},
+                                             {"motion", run_motion_task},
+                                             {"path", run_path_task},
+                                             {"crank-rocker", run_crank_rocker_task},
+                                             {"dwell", run_dwell_task}};
+  return t;
+}
+
+Overrides read_overrides(const po::variables_map& vm) {
+  Overrides o;
+  if (vm.count("evaluations")) o.evaluations = vm["evaluations"].as<long>();
+  if (vm.count("restarts")) o.restarts = vm["restarts"].as<int>();
+  if (vm.count("seed")) {
+    const long long s = vm["seed"].as<long long>();
+    if (s < 0 || s > 4294967295LL) io::fail_option("--seed", fmt::format("expected 0..4294967295, found {}", s));
+    o.seed = static_cast<unsigned>(s);
+  }
+  return o;
+}
+
+Output run_task(const std::string& name, const std::string& file, const Overrides& overrides) {
+  const auto it = tasks().find(name);
+  if (it == tasks().end())
+    throw io::InputError(fmt::format("expected a synthesis task (function, motion, path, crank-rocker, dwell), "
+                                     "found '{:.60}'; usage: {}", name, usage));
+  const io::YamlDocument doc = io::load_yaml_file(file);
+  try {
+    return it->second(doc, overrides);
+  } catch (const gs::NoSolution& e) {
+    throw io::InputError(fmt::format("{}: {}", file, e.what()));
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(fmt::format("{}: {}", file, e.what()));
+  }
+}
+
+std::string drawing_text(const Output& out, const std::string& path) {
+  const bool dxf = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dxf") == 0;
+  return dxf ? io::to_dxf(out.drawing) : io::to_svg(out.drawing, {5, 0.35, out.report.title});
+}
+
+}  // namespace
+
+int run_synth_command(kin::CommandContext& context) {
+  po::options_description desc("gearkit synth options");
+  desc.add_options()
+      ("task", po::value<std::string>()->value_name("TASK"), "function, motion, path, crank-rocker or dwell")
+      ("file", po::value<std::string>()->value_name("FILE"), "task file (YAML, see docs/synthesis.md)")
+      ("mechanism,m", po::value<std::string>()->value_name("OUT.yaml"), "write the result as a `gearkit kin` mechanism file")
+      ("drawing", po::value<std::string>()->value_name("OUT.svg"), "draw the linkage at its positions (SVG, or DXF by extension)")
+      ("plot", po::value<std::string>()->value_name("OUT.svg"), "write the task's chart (structural error, output, transmission angle)")
+      ("seed", po::value<long long>()->value_name("N"), "path: random seed of the optimiser (default 1)")
+      ("evaluations", po::value<long>()->value_name("N"), "path: objective evaluations (docs/cli.md for the limit)")
+      ("restarts", po::value<int>()->value_name("N"), "path: independent optimiser runs (1..64)");
+  io::add_common_options(desc);
+  po::positional_options_description positional;
+  positional.add("task", 1).add("file", 1);
+  po::variables_map vm;
+  if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
+  const io::CommonOptions common = io::common_options(vm);
+  if (!vm.count("task") || !vm.count("file")) throw io::InputError(fmt::format("missing the task or its file; usage: {}", usage));
+
+  const Output out = run_task(vm["task"].as<std::string>(), vm["file"].as<std::string>(), read_overrides(vm));
+  // Everything is computed before the first file is written.
+  std::vector<std::pair<std::string, std::string>> files;
+  if (vm.count("mechanism")) files.push_back({"--mechanism", out.mechanism_yaml});
+  if (vm.count("drawing")) files.push_back({"--drawing", drawing_text(out, vm["drawing"].as<std::string>())});
+  if (vm.count("plot")) {
+    if (!out.plot) io::fail_option("--plot", "this task has no chart");
+    files.push_back({"--plot", io::to_svg(*out.plot)});
+  }
+  for (const auto& [option, text] : files) io::write_file_atomic(vm[option.substr(2)].as<std::string>(), text, option);
+  return io::emit(out.report, common, context.out);
+}
+
+}  // namespace gearkit::plugins::synth
