@@ -355,10 +355,10 @@ PathResult synthesize_path(const PathTask& t) {
   Problem p = normalised(t, centre, S);
   const Bounds b = bounds_of(p);
   // Global stage: every restart explores on its own branch and crank direction.
-  std::vector<Start> starts = global_stage(p, b, t.budget, t.budget.evaluations * 85 / 100);
+  std::vector<Start> starts = global_stage(p, b, t.budget, t.budget.evaluations * 80 / 100);
   std::sort(starts.begin(), starts.end(), [](const Start& a, const Start& c) { return a.f < c.f; });
-  // Local stage: the best few are polished; the first feasible one with the least error wins.
-  const std::size_t polished = std::min<std::size_t>(starts.size(), 3);
+  // Local stage: the best five are polished; the first feasible one with the least error wins.
+  const std::size_t polished = std::min<std::size_t>(starts.size(), 5);
   long spent = 0;
   for (const Start& s : starts) spent += s.evaluations;
   const long local_budget = (t.budget.evaluations - spent) / static_cast<long>(polished);

@@ -105,7 +105,11 @@ void draw_dwell(const gs::DwellTask& t, const gs::DwellResult& r, io::Drawing& d
   d.arcs.push_back({"targets", r.D.x() * 1000, r.D.y() * 1000, r.radius * 1000, std::min(a0, a1) * 180 / pi, std::max(a0, a1) * 180 / pi});
   const gs::Vec2 P = gs::pose_at(r.four_bar, r.window_start)->P;
   d.polylines.push_back({"linkage", {{P.x() * 1000, P.y() * 1000, 0}, {r.D.x() * 1000, r.D.y() * 1000, 0}, {r.O6.x() * 1000, r.O6.y() * 1000, 0}}, false});
-  d.circles.push_back({"pivots", r.O6.x() * 1000, r.O6.y() * 1000, r.output_rocker * 1000 / 25});
+  const double size = r.output_rocker * 1000 / 25;
+  d.circles.push_back({"pivots", r.O6.x() * 1000, r.O6.y() * 1000, size});
+  d.circles.push_back({"linkage", r.D.x() * 1000, r.D.y() * 1000, size / 2});
+  d.texts.push_back({"pivots", r.O6.x() * 1000 + 1.5 * size, r.O6.y() * 1000, 2 * size, "O6"});
+  d.texts.push_back({"linkage", r.D.x() * 1000 + size, r.D.y() * 1000 + size, 2 * size, "D"});
 }
 
 }  // namespace

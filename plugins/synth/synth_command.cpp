@@ -5,7 +5,7 @@
 
 #include "synth_output.hpp"
 
-#include <gearkit/io/atomic_file.hpp>
+#include <gearkit/io/output.hpp>
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/synth/function_generation.hpp>
@@ -91,16 +91,14 @@ int run_synth_command(kin::CommandContext& context) {
   if (!vm.count("task") || !vm.count("file")) throw io::InputError(fmt::format("missing the task or its file; usage: {}", usage));
 
   const Output out = run_task(vm["task"].as<std::string>(), vm["file"].as<std::string>(), read_overrides(vm));
-  // Everything is computed before the first file is written.
-  std::vector<std::pair<std::string, std::string>> files;
-  if (vm.count("mechanism")) files.push_back({"--mechanism", out.mechanism_yaml});
-  if (vm.count("drawing")) files.push_back({"--drawing", drawing_text(out, vm["drawing"].as<std::string>())});
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
+  if (vm.count("mechanism")) outputs.add("--mechanism", vm["mechanism"].as<std::string>(), out.mechanism_yaml);
+  if (vm.count("drawing")) outputs.add("--drawing", vm["drawing"].as<std::string>(), drawing_text(out, vm["drawing"].as<std::string>()));
   if (vm.count("plot")) {
     if (!out.plot) io::fail_option("--plot", "this task has no chart");
-    files.push_back({"--plot", io::to_svg(*out.plot)});
+    outputs.add("--plot", vm["plot"].as<std::string>(), io::to_svg(*out.plot));
   }
-  for (const auto& [option, text] : files) io::write_file_atomic(vm[option.substr(2)].as<std::string>(), text, option);
-  return io::emit(out.report, common, context.out);
+  return io::emit(out.report, common, outputs);
 }
 
 }  // namespace gearkit::plugins::synth

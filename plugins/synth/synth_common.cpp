@@ -124,7 +124,9 @@ void draw_four_bar(const gs::FourBar& f, const std::vector<double>& theta2, doub
     if (std::none_of(d.layers.begin(), d.layers.end(), [&](const io::Layer& e) { return e.name == l.name; })) d.layers.push_back(l);
   const auto mm_xy = [](const gs::Vec2& p) { return io::Vertex{p.x() * 1000, p.y() * 1000, 0}; };
   const double r = std::max({f.crank, f.coupler, f.rocker, f.ground()}) * 1000 / 60;
-  for (std::size_t j = 0; j < theta2.size(); ++j) {
+  // Up to five positions are drawn in full; beyond that only the first and the curve.
+  const std::size_t drawn = theta2.size() <= 5 ? theta2.size() : 1;
+  for (std::size_t j = 0; j < drawn; ++j) {
     const auto pose = gs::pose_at(f, theta2[j]);
     if (!pose) continue;
     const std::string layer = j == 0 ? "linkage" : "positions";
@@ -133,7 +135,10 @@ void draw_four_bar(const gs::FourBar& f, const std::vector<double>& theta2, doub
     for (const gs::Vec2& p : {pose->A, pose->B}) d.circles.push_back({layer, p.x() * 1000, p.y() * 1000, r / 2});
     d.texts.push_back({layer, pose->P.x() * 1000 + r, pose->P.y() * 1000 + r, 1.5 * r, fmt::format("{}", j + 1)});
   }
-  for (const gs::Vec2& p : {f.O2, f.O4}) d.circles.push_back({"pivots", p.x() * 1000, p.y() * 1000, r});
+  for (const auto& [name, p] : {std::pair{"O2", f.O2}, std::pair{"O4", f.O4}}) {
+    d.circles.push_back({"pivots", p.x() * 1000, p.y() * 1000, r});
+    d.texts.push_back({"pivots", p.x() * 1000 + 1.5 * r, p.y() * 1000 - 3 * r, 2 * r, name});
+  }
   io::Polyline curve{"coupler_curve", {}, false};
   const int n = std::max(2, static_cast<int>(std::ceil(travel / (pi / 180))));
   for (int k = 0; k <= n; ++k)

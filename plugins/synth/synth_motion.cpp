@@ -96,23 +96,29 @@ gs::MotionCandidate three_positions(io::MapReader& r, const MotionFile& f, Outpu
   return gs::best_three_position(f.poses, f.grid.value_or(16), f.max_link_ratio, f.require_crank);
 }
 
-// Runs of consecutive samples of the Burmester curves as polylines (mm).
-void draw_burmester_curves(const std::vector<gs::BurmesterDyad>& family, io::Drawing& d) {
+// Runs of consecutive samples of the Burmester curves as polylines (mm), kept within five
+// times the poses' spread of their centre (the curves run off to infinity).
+void draw_burmester_curves(const std::vector<gs::Pose>& poses, const std::vector<gs::BurmesterDyad>& family, io::Drawing& d) {
   d.layers.push_back({"centre_point_curve", 3, "#2ca02c", false});
   d.layers.push_back({"circle_point_curve", 6, "#9467bd", true});
-  double scale = 0;
-  for (const auto& b : family) scale = std::max(scale, b.dyad.moving_pivot.norm());
+  gs::Vec2 middle(0, 0);
+  double spread = 0;
+  for (const gs::Pose& p : poses) middle += p.point / static_cast<double>(poses.size());
+  for (const gs::Pose& p : poses) spread = std::max(spread, (p.point - middle).norm());
+  const double reach = 5 * std::max(spread, 1e-9);
   io::Polyline centre{"centre_point_curve", {}, false}, circle{"circle_point_curve", {}, false};
   for (std::size_t k = 0; k < family.size(); ++k) {
     const gs::Dyad& g = family[k].dyad;
-    const bool jump = k > 0 && ((family[k - 1].dyad.ground_pivot - g.ground_pivot).norm() > 0.2 * scale ||
-                                family[k - 1].closure != family[k].closure);
+    const bool outside = (g.ground_pivot - middle).norm() > reach || (g.moving_pivot - middle).norm() > reach;
+    const bool jump = outside || (k > 0 && ((family[k - 1].dyad.ground_pivot - g.ground_pivot).norm() > 0.2 * reach ||
+                                            family[k - 1].closure != family[k].closure));
     if (jump) {
       if (centre.vertices.size() > 1) d.polylines.push_back(centre);
       if (circle.vertices.size() > 1) d.polylines.push_back(circle);
       centre.vertices.clear();
       circle.vertices.clear();
     }
+    if (outside) continue;
     centre.vertices.push_back({g.ground_pivot.x() * 1000, g.ground_pivot.y() * 1000, 0});
     circle.vertices.push_back({g.moving_pivot.x() * 1000, g.moving_pivot.y() * 1000, 0});
   }
@@ -122,7 +128,7 @@ void draw_burmester_curves(const std::vector<gs::BurmesterDyad>& family, io::Dra
 
 gs::MotionCandidate four_positions(io::MapReader& r, const MotionFile& f, Output& out) {
   const auto family = gs::burmester_curves(f.poses, f.samples.value_or(180));
-  draw_burmester_curves(family, out.drawing);
+  draw_burmester_curves(f.poses, family, out.drawing);
   out.report.json["burmester_curve_samples"] = family.size();
   if (r.has("burmester")) {
     io::MapReader m = r.map("burmester");
@@ -140,8 +146,10 @@ gs::MotionCandidate four_positions(io::MapReader& r, const MotionFile& f, Output
     m.finish();
     return gs::four_bar_from_dyads(f.poses, in, o, f.require_crank);
   }
+  // At most 400 dyads enter the pair search (160 000 pairs), however finely the curves are drawn.
   std::vector<gs::Dyad> dyads;
-  for (const auto& b : family) dyads.push_back(b.dyad);
+  const std::size_t stride = (family.size() + 399) / 400;
+  for (std::size_t k = 0; k < family.size(); k += std::max<std::size_t>(stride, 1)) dyads.push_back(family[k].dyad);
   out.report.notes.push_back(fmt::format("Free choices: two of {} dyads sampled on the Burmester curves, searched for the best "
                                          "defect-free linkage.", dyads.size()));
   return gs::best_pair_of_dyads(f.poses, dyads, f.max_link_ratio, f.require_crank);

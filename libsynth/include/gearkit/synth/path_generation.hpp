@@ -1,8 +1,8 @@
 #pragma once
 // Path generation: a four-bar whose coupler point passes near target points, with or without
 // prescribed timing (crank angles), found by global optimisation (NLopt: `restarts` runs of the
-// evolution strategy ESCH share 85 % of the evaluations, then Powell's BOBYQA polishes the best
-// three with the rest; see docs/design.md for the choice).
+// evolution strategy ESCH and of controlled random search CRS2-LM share 80 % of the evaluations,
+// then Powell's BOBYQA polishes the best five with the rest; docs/design.md has the choice).
 //
 // Design variables, as in the optimisation literature (Cabrera, Simon & Prado 2002, Mechanism
 // and Machine Theory 37: 1165-1177) less the placement: link lengths r1 (ground), r2 (crank),
