@@ -71,7 +71,7 @@ std::string drawing_text(const Output& out, const std::string& path) {
 
 }  // namespace
 
-int run_synth_command(kin::CommandContext& context) {
+int run_synth_command(plugin::CommandContext& context) {
   po::options_description desc("gearkit synth options");
   desc.add_options()
       ("task", po::value<std::string>()->value_name("TASK"), "function, motion, path, crank-rocker or dwell")

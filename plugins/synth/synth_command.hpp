@@ -1,9 +1,9 @@
 #pragma once
-#include <gearkit/kin/plugin.hpp>
+#include <gearkit/plugin/plugin.hpp>
 
 namespace gearkit::plugins::synth {
 
 /// `gearkit synth TASK FILE.yaml [options]` (docs/synthesis.md).
-int run_synth_command(kin::CommandContext& context);
+int run_synth_command(plugin::CommandContext& context);
 
 }  // namespace gearkit::plugins::synth

@@ -3,7 +3,7 @@
 #include "synth_output.hpp"
 
 #include <gearkit/io/error.hpp>
-#include <gearkit/io/mechanism_yaml.hpp>
+#include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/fourbar.hpp>
 #include <gearkit/kin/sweep.hpp>
 
@@ -21,14 +21,14 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-double output_value(const io::Mechanism& mech, const kin::Data& data, const std::string& name) {
+double output_value(const mechanism::Mechanism& mech, const kin::Data& data, const std::string& name) {
   for (const kin::Output& o : mech.outputs)
     if (o.name == name) return kin::evaluate_output(mech.model, data, o).value;
   throw std::logic_error("synth: the written mechanism lacks output " + name);
 }
 
 // Moves the driver from its current input to `value` by continuation; false at a dead point.
-bool reach(const io::Mechanism& mech, kin::Data& data, double from, double value) {
+bool reach(const mechanism::Mechanism& mech, kin::Data& data, double from, double value) {
   if (std::abs(value - from) > 1e-9) {
     kin::SweepOptions o;
     o.start = from;
@@ -47,8 +47,9 @@ bool reach(const io::Mechanism& mech, kin::Data& data, double from, double value
 }  // namespace
 
 double verify_with_solver(const std::string& yaml, const std::vector<Checkpoint>& checkpoints, io::Report& report) {
-  const io::Mechanism mech =
-      io::read_mechanism(io::load_yaml_text(yaml, "synthesised mechanism"), [](const std::string&) { return nullptr; });
+  // The file has only revolute and prismatic joints: no element type to look up.
+  const mechanism::Mechanism mech = mechanism::read_mechanism(io::load_yaml_text(yaml, "synthesised mechanism"),
+                                                              [](std::string_view) { return nullptr; });
   kin::Data data(mech.model);
   double current = data.inputs(0), worst = 0;
   for (std::size_t j = 0; j < checkpoints.size(); ++j) {

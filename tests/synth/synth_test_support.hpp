@@ -1,7 +1,7 @@
 #pragma once
 // Helpers of the synthesis tests: the reference four-bar analysed by libkin (the truth the
 // synthesis must recover), and the loop closed through the mechanism reader and the solver.
-#include <gearkit/io/mechanism_yaml.hpp>
+#include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/solve.hpp>
 #include <gearkit/kin/sweep.hpp>
 #include <gearkit/synth/linkage.hpp>
@@ -36,19 +36,19 @@ inline FourBar reference_four_bar() {
 /// A mechanism loaded through the `gearkit kin` reader with its solver workspace, driven by
 /// continuation from the drawn position.
 struct Driven {
-  io::Mechanism mech;
+  mechanism::Mechanism mech;
   std::unique_ptr<kin::Data> data;
   double input = 0;  ///< current driver value [rad]
 
   static Driven from_text(const std::string& yaml) {
-    Driven d{io::read_mechanism(io::load_yaml_text(yaml, "synthesised.yaml"), [](const std::string&) { return nullptr; }),
+    Driven d{mechanism::read_mechanism(io::load_yaml_text(yaml, "synthesised.yaml"), [](std::string_view) { return nullptr; }),
              nullptr, 0};
     d.data = std::make_unique<kin::Data>(d.mech.model);
     d.input = d.data->inputs(0);
     return d;
   }
   static Driven from_file(const std::string& path) {
-    Driven d{io::load_mechanism(path, [](const std::string&) { return nullptr; }), nullptr, 0};
+    Driven d{mechanism::load_mechanism(path, [](std::string_view) { return nullptr; }), nullptr, 0};
     d.data = std::make_unique<kin::Data>(d.mech.model);
     d.input = d.data->inputs(0);
     return d;
