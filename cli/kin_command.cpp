@@ -4,6 +4,7 @@
 // points, limit positions of outputs, instant centres, Grashof class and transmission angle,
 // driving torque and joint reactions.
 #include "kin_analysis.hpp"
+#include "kin_equations.hpp"
 #include "kin_command.hpp"
 #include "kin_reactions.hpp"
 #include "kin_example.hpp"
@@ -399,6 +400,8 @@ int run_kin_command(plugin::CommandContext& context) {
       "outputs", io::po::value<std::string>()->value_name("A,B,..."), "only these named outputs of the model")(
       "plot", io::po::value<std::string>()->value_name("FILE.svg"), "SVG plot of the outputs against the input")(
       "animate", io::po::value<std::string>()->value_name("FILE.svg"), "animated SVG of the mechanism through the sweep")(
+      "equations", io::po::bool_switch(), "constraint equations, Jacobian, velocity and acceleration equations and "
+      "velocity ratios in the coordinates of the file's equations: section (docs/kin.md)")(
       "example", io::po::value<std::string>()->value_name("chain:N"),
       "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
   io::add_common_options(desc);
@@ -407,7 +410,7 @@ int run_kin_command(plugin::CommandContext& context) {
   io::po::variables_map vm;
   const char* usage =
       "gearkit kin FILE.yaml [--at VALUE | --sweep START:END:STEP] [--driver NAME] [--outputs A,B] [--plot FILE] "
-      "[--animate FILE] [--format text|json|csv|md]";
+      "[--animate FILE] [--equations] [--format text|json|csv|md]";
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
   if (vm.count("example")) {
@@ -479,6 +482,7 @@ int run_kin_command(plugin::CommandContext& context) {
   }
   const KinAnalysis analysis = analyse(mech, data, driver, at, sweeping ? &range : nullptr);
   io::Report report = build_report(mech, analysis);
+  if (vm["equations"].as<bool>()) add_equations_section(report, mech, analysis, common.format);
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (vm.count("plot")) {
     if (analysis.positions.empty()) report.warnings.push_back("no positions to plot; --plot file not written");

@@ -17,6 +17,7 @@ packages=(
   libslvs1-dev
   libmuparser-dev
   libnlopt-dev
+  libginac-dev
 )
 
 missing=()

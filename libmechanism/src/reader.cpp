@@ -60,6 +60,7 @@ class Reader {
     if (auto loads = root.optional_node("loads")) read_loads(*loads);
     if (root.has("outputs"))
       for (const YAML::Node& o : root.sequence("outputs")) read_output(o);
+    root.optional_node("equations");  // the course's coordinates: read by `kin --equations` (libsym)
     root.finish();
     return std::move(mech_);
   }

@@ -65,6 +65,9 @@ class PinInSlot final : public Constraint {
   std::vector<int> bodies() const override { return {pin_.body, slot_.body}; }
   void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
   Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const override;
+  const BodyPoint& pin() const { return pin_; }
+  const BodyPoint& slot() const { return slot_; }
+  const Eigen::Vector2d& axis_local() const { return axis_; }
 
  private:
   BodyPoint pin_, slot_;
