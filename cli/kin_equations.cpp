@@ -132,7 +132,7 @@ void ratio_table(io::Report& r, const sym::EquationsInput& in, const sym::Equati
 
 }  // namespace
 
-void add_equations_section(io::Report& report, const io::Mechanism& mech, const KinAnalysis& analysis, io::Format format) {
+void add_equations_section(io::Report& report, const mechanism::Mechanism& mech, const KinAnalysis& analysis, io::Format format) {
   if (analysis.positions.empty()) {
     report.warnings.push_back("--equations: no assembled position to write the equations at");
     return;

@@ -14,6 +14,6 @@ namespace gearkit::cli {
 /// Without an `equations:` section the coordinates are each moving link's angle (phi1, phi2...
 /// in the file's order, along the line through its first two points) and each slide (s1, ...).
 /// @throws io::InputError for a malformed section (file:line:column).
-void add_equations_section(io::Report& report, const io::Mechanism& mech, const KinAnalysis& analysis, io::Format format);
+void add_equations_section(io::Report& report, const mechanism::Mechanism& mech, const KinAnalysis& analysis, io::Format format);
 
 }  // namespace gearkit::cli
