@@ -12,6 +12,7 @@
 #include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/plot.hpp>
 #include <gearkit/io/progress.hpp>
 #include <gearkit/io/report.hpp>
@@ -59,8 +60,30 @@ mechanism::DriverRange parse_sweep(const std::string& text, io::Quantity q, std:
   }
   if (!(r.step > 0.0)) io::fail_option("--sweep", fmt::format("expected a STEP > 0, found {}", io::quote(parts[2])));
   if (r.start == r.end) io::fail_option("--sweep", "expected START different from END");
-  if (std::abs(r.end - r.start) / r.step > 1e6) io::fail_option("--sweep", "expected at most 1e6 steps");
+  if (std::abs(r.end - r.start) / r.step + 1 > io::limits::kSweepPositions)
+    io::fail_option("--sweep", fmt::format("expected at most {:g} positions, found {:.6g}", io::limits::kSweepPositions,
+                                           std::floor(std::abs(r.end - r.start) / r.step) + 1));
   return r;
+}
+
+// The work of a sweep grows with positions times coordinates (docs/cli.md, "Limits").
+void check_sweep_work(const kin::Model& m, const io::DriverRange& r, const std::string& where) {
+  const double positions = std::floor(std::abs(r.end - r.start) / r.step) + 1;
+  const double work = positions * m.coordinates();
+  if (work > io::limits::kSweepWork)
+    throw io::InputError(fmt::format("{}: expected at most {:g} positions times coordinates for a sweep, found {:g} "
+                                     "positions x {} coordinates; take a larger step",
+                                     where, io::limits::kSweepWork, positions, m.coordinates()));
+}
+
+// Continuation from the drawn input to --at takes |at - drawn| / step steps of the solver.
+void check_continuation_work(const kin::Model& m, double distance, double step) {
+  const double steps = std::ceil(std::abs(distance) / step);
+  if (steps > io::limits::kContinuationSteps || steps * m.coordinates() > io::limits::kContinuationWork)
+    io::fail_option("--at", fmt::format("expected a value within {:g} continuation steps of the drawn input (and at "
+                                        "most {:g} steps times coordinates), found {:g} steps for {} coordinates",
+                                        io::limits::kContinuationSteps, io::limits::kContinuationWork, steps,
+                                        m.coordinates()));
 }
 
 nlohmann::json coordinates_json(const kin::Model& m, const Eigen::VectorXd& v, int order) {
@@ -121,6 +144,7 @@ KinAnalysis analyse(const mechanism::Mechanism& mech, kin::Data& data, int drive
     // Reach the requested input by continuation from the drawn configuration, so the answer
     // stays on the drawing's assembly branch (Newton from a distant guess may land on another).
     const double step = angular(mech, driver) ? 2.0 * M_PI / 180.0 : 0.002;
+    check_continuation_work(m, value - drawn, step);
     if (std::abs(value - drawn) > step) {
       kin::SweepOptions o;
       o.driver = driver;
@@ -415,12 +439,12 @@ int run_kin_command(plugin::CommandContext& context) {
   const io::CommonOptions common = io::common_options(vm);
   if (vm.count("example")) {
     if (vm.count("file")) io::fail_option("--example", "expected no mechanism file with --example, found one");
-    const std::string yaml = example_mechanism_yaml(vm["example"].as<std::string>());
-    if (common.output.empty()) context.out << yaml;
-    else io::write_file_atomic(common.output, yaml, "--output");
+    io::OutputSet outputs(context.out);
+    outputs.add("--output", common.output, example_mechanism_yaml(vm["example"].as<std::string>()));
+    outputs.commit();
     return 0;
   }
-  if (!vm.count("file")) throw io::InputError(fmt::format("expected a mechanism file; usage: {}", usage));
+  if (!vm.count("file")) throw io::InputError(fmt::format("expected the FILE argument, found none; usage: {}", usage));
   if (vm.count("at") && vm.count("sweep")) io::fail_option("--at", "expected either --at or --sweep, found both");
 
   const std::string file = vm["file"].as<std::string>();
@@ -466,6 +490,7 @@ int run_kin_command(plugin::CommandContext& context) {
     range = parse_sweep(vm["sweep"].as<std::string>(), q, unit);
     sweeping = true;
   }
+  if (sweeping) check_sweep_work(m, range, vm.count("sweep") ? "option '--sweep'" : file);
 
   // Mobility against the number of drivers: a model must be exactly driven.
   kin::Data data(m);

@@ -1,11 +1,13 @@
 #include <gearkit/io/command_line.hpp>
 
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/quantity.hpp>
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <ostream>
 
 namespace gearkit::io {
@@ -66,6 +68,16 @@ std::string label(const std::string& name, const std::vector<std::string>& posit
   return fmt::format("option '--{}'", name);
 }
 
+/// Options read as double by Boost take "nan", "inf" and 1e300: the same range as a plain number
+/// in a model file applies (quantity.hpp, magnitude_range).
+void check_plain_number(double value, const std::string& where) {
+  const MagnitudeRange range = magnitude_range(Quantity::dimensionless);
+  const double size = std::abs(value);
+  if (!std::isfinite(value) || size > range.largest || (size > 0.0 && size < range.smallest))
+    throw InputError(fmt::format("{}: expected a finite number of size 0 or between {:g} and {:g}, found {:g}", where,
+                                 range.smallest, range.largest, value));
+}
+
 /// An empty value ("--output ''") would otherwise mean "not given" to most commands.
 void reject_empty_values(const po::variables_map& vm, const po::options_description& desc,
                          const std::vector<std::string>& positionals) {
@@ -78,6 +90,7 @@ void reject_empty_values(const po::variables_map& vm, const po::options_descript
     else if (const auto* v = boost::any_cast<std::vector<std::string>>(&value.value()))
       empty = std::any_of(v->begin(), v->end(), [](const std::string& x) { return x.empty(); });
     if (empty) throw InputError(fmt::format("{}: expected a value, found an empty one", label(name, positionals)));
+    if (const auto* d = boost::any_cast<double>(&value.value())) check_plain_number(*d, label(name, positionals));
   }
 }
 
@@ -123,9 +136,16 @@ int exit_status(const Report& report, const CommonOptions& options) {
 }
 
 int emit(const Report& report, const CommonOptions& options, OutputSet& outputs) {
-  outputs.add("--output", options.output, render(report, options.format));
+  const Report* checked = &report;
+  Report named;
+  if (!non_finite_quantities(report).empty()) {  // rare: copy only then
+    named = report;
+    warn_non_finite(named);
+    checked = &named;
+  }
+  outputs.add("--output", options.output, render(*checked, options.format));
   outputs.commit();
-  return exit_status(report, options);
+  return exit_status(*checked, options);
 }
 
 int emit(const Report& report, const CommonOptions& options, std::ostream& out) {

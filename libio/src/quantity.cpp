@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cstdlib>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -288,6 +289,31 @@ std::string_view describe(Quantity q) {
   return "a quantity";
 }
 
+MagnitudeRange magnitude_range(Quantity q) {
+  // Far beyond any machine (a 10 km part, 1e8 rpm, 1 TW) yet far inside double's range, so that
+  // products and quotients of accepted values stay finite; the floor keeps 1/x finite too.
+  constexpr double kFloor = 1e-15;
+  switch (q) {
+    case Quantity::dimensionless: return {kFloor, 1e9, ""};
+    case Quantity::length: return {kFloor, 1e4, "m"};
+    case Quantity::angle: return {kFloor, 1e7, "rad"};
+    case Quantity::time: return {kFloor, 1e8, "s"};
+    case Quantity::mass: return {kFloor, 1e8, "kg"};
+    case Quantity::force: return {kFloor, 1e12, "N"};
+    case Quantity::torque: return {kFloor, 1e12, "N*m"};
+    case Quantity::energy: return {kFloor, 1e15, "J"};
+    case Quantity::power: return {kFloor, 1e12, "W"};
+    case Quantity::velocity: return {kFloor, 1e5, "m/s"};
+    case Quantity::acceleration: return {kFloor, 1e9, "m/s^2"};
+    case Quantity::angular_velocity: return {kFloor, 1e7, "rad/s"};
+    case Quantity::angular_acceleration: return {kFloor, 1e10, "rad/s^2"};
+    case Quantity::moment_of_inertia: return {kFloor, 1e10, "kg*m^2"};
+    case Quantity::stiffness: return {kFloor, 1e13, "N/m"};
+    case Quantity::pressure: return {kFloor, 1e13, "Pa"};
+  }
+  return {kFloor, 1e9, ""};
+}
+
 double unit_factor_si(std::string_view unit, Quantity expected) {
   const std::string ascii = ascii_unit(trim(unit));
   ParsedUnit u = parse_unit(ascii, unit);
@@ -313,8 +339,11 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
   errno = 0;
   char* end = nullptr;
   double value = std::strtod(number.c_str(), &end);
-  if (!std::isfinite(value) || errno == ERANGE)
+  // ERANGE also flags an underflow to a subnormal or zero: the range check below refuses those.
+  if (!std::isfinite(value) || (errno == ERANGE && std::abs(value) >= 1.0))
     throw QuantityError(fmt::format("expected a finite number, found {}", quoted(t)));
+  if (errno == ERANGE && value == 0.0 && number.find_first_of("123456789") != std::string::npos)
+    value = std::numeric_limits<double>::denorm_min();  // "1e-400" is not 0: let the range refuse it
   double factor = 1.0;
   if (rest.empty()) {
     if (!default_unit.empty()) factor = unit_factor_si(default_unit, expected);
@@ -328,6 +357,13 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
   double si_value = value * factor;
   if (!std::isfinite(si_value))
     throw QuantityError(fmt::format("expected a finite number, found {}", quoted(t)));
+  const MagnitudeRange range = magnitude_range(expected);
+  // A non-zero number that underflows to 0 in SI is as much out of range as one that is tiny.
+  const double size = si_value == 0.0 && value != 0.0 ? std::numeric_limits<double>::denorm_min() : std::abs(si_value);
+  if (size > range.largest || (size > 0.0 && size < range.smallest))
+    throw QuantityError(fmt::format("expected {} of size 0 or between {:g} and {:g}{}{}, found {}", describe(expected),
+                                    range.smallest, range.largest, range.si_unit.empty() ? "" : " ",
+                                    range.si_unit, quoted(t)));
   return si_value;
 }
 

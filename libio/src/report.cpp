@@ -176,6 +176,59 @@ std::string render(const Report& report, Format format) {
   return os.str();
 }
 
+namespace {
+
+bool non_finite_text(std::string_view cell) {
+  std::size_t start = 0;
+  while (start <= cell.size()) {
+    std::size_t end = cell.find(' ', start);
+    std::string_view token = cell.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+    if (!token.empty() && (token.front() == '-' || token.front() == '+')) token.remove_prefix(1);
+    if (token == "nan" || token == "inf" || token == "NaN" || token == "Inf") return true;
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return false;
+}
+
+// JSON paths of non-finite numbers, array indices written "[]" so that a column of a sweep
+// is named once.
+void non_finite_paths(const nlohmann::json& j, const std::string& path, std::vector<std::string>& out) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    if (std::find(out.begin(), out.end(), path) == out.end()) out.push_back(path);
+  } else if (j.is_object()) {
+    for (const auto& [key, value] : j.items()) non_finite_paths(value, path.empty() ? key : path + "." + key, out);
+  } else if (j.is_array()) {
+    for (const auto& value : j) non_finite_paths(value, path + "[]", out);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> non_finite_quantities(const Report& report) {
+  std::vector<std::string> names;
+  non_finite_paths(report.json, "", names);
+  for (std::string& n : names) n = fmt::format("'{}'", n);
+  for (const Table& t : report.tables)
+    for (const auto& row : t.rows)
+      for (std::size_t c = 0; c < row.size(); ++c) {
+        if (!non_finite_text(row[c])) continue;
+        std::string name = fmt::format("'{}' in table '{}'", c < t.header.size() ? t.header[c] : "?", t.title);
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+      }
+  return names;
+}
+
+void warn_non_finite(Report& report) {
+  const std::vector<std::string> names = non_finite_quantities(report);
+  constexpr std::size_t kShown = 8;
+  for (std::size_t i = 0; i < names.size() && i < kShown; ++i)
+    report.warnings.push_back(fmt::format("non-finite result: {} is not a finite number (nan or inf; null in JSON): "
+                                          "the inputs put it out of range", names[i]));
+  if (names.size() > kShown)
+    report.warnings.push_back(fmt::format("non-finite result: {} more quantities are not finite", names.size() - kShown));
+}
+
 std::string fixed(double value, int digits) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";

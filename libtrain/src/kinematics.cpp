@@ -172,6 +172,23 @@ std::vector<TransmissionMode> transmission_modes(const TrainModel& model, const 
   std::vector<Condition> kept;
   for (const Condition& c : base)
     if (c.kind == Condition::Kind::couple) kept.push_back(c);
+  // With more than two degrees of freedom (with its couplings) one more condition and the input
+  // leave the train free in every mode: say so once instead of for each of the n(n+1)/2 modes.
+  std::size_t dof = 0;
+  try {
+    dof = solve_speeds(model, kept).remaining_dof;
+  } catch (const ConditionError&) {
+    dof = 0;
+  }
+  if (dof > 2) {
+    TransmissionMode all;
+    all.label = "any member held or pair coupled";
+    all.status = TransmissionMode::Status::underdetermined;
+    all.message = fmt::format("{} degree(s) of freedom left in every mode: the train (with its couplings) has {}, a "
+                              "mode needs 2",
+                              dof - 2, dof);
+    return {all};
+  }
   std::vector<MemberId> candidates;
   for (MemberId m = 1; m < model.member_count(); ++m)
     if (!model.is_planet(m) && m != input && m != output) candidates.push_back(m);

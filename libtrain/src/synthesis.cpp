@@ -7,6 +7,7 @@
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 namespace gearkit::train {
 
@@ -20,6 +21,35 @@ void check_bounds(int z_min, int z_max) {
 
 double relative_error(const Rational& ratio, const Rational& target) {
   return std::fabs(to_double(Rational(ratio / target - 1)));
+}
+
+bool better_reducer(const CoaxialReducer& a, const CoaxialReducer& b) {
+  if (a.relative_error != b.relative_error) return a.relative_error < b.relative_error;
+  if (a.stage_imbalance != b.stage_imbalance) return a.stage_imbalance < b.stage_imbalance;
+  if (a.centre_distance_mm != b.centre_distance_mm) return a.centre_distance_mm < b.centre_distance_mm;
+  return std::tie(a.z1, a.z2, a.z3) < std::tie(b.z1, b.z2, b.z3);
+}
+
+bool better_planetary(const Planetary& a, const Planetary& b) {
+  if (a.relative_error != b.relative_error) return a.relative_error < b.relative_error;
+  if (a.z_ring != b.z_ring) return a.z_ring < b.z_ring;
+  return a.z_sun < b.z_sun;
+}
+
+// Keeps the best `keep` candidates found so far: a wide tolerance admits millions of tooth-count
+// sets, which must not all be held in memory (the list is pruned whenever it doubles).
+template <class T, class Better>
+void add_candidate(std::vector<T>& found, T candidate, std::size_t keep, Better better) {
+  found.push_back(std::move(candidate));
+  if (found.size() < 2 * std::max<std::size_t>(keep, 1)) return;
+  std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(keep), found.end(), better);
+  found.resize(keep);
+}
+
+template <class T, class Better>
+void keep_best(std::vector<T>& found, std::size_t keep, Better better) {
+  std::sort(found.begin(), found.end(), better);
+  if (found.size() > keep) found.resize(keep);
 }
 
 }  // namespace
@@ -65,23 +95,18 @@ std::vector<CoaxialReducer> synthesise_coaxial_reducer(const CoaxialReducerSpec&
         const long double error = diff.convert_to<long double>() / den.convert_to<long double>();
         if (error > static_cast<long double>(spec.tolerance)) continue;
         if (spec.equal_stages && static_cast<long long>(z1) * z4 != static_cast<long long>(z2) * z3) continue;
-        found.push_back(CoaxialReducer{
+        add_candidate(found, CoaxialReducer{
             z1, z2, static_cast<int>(z3), static_cast<int>(z4),
             static_cast<long long>(z1) * z3 / std::gcd(static_cast<long long>(z1) * z3, static_cast<long long>(z2) * z4),
             static_cast<long long>(z2) * z4 / std::gcd(static_cast<long long>(z1) * z3, static_cast<long long>(z2) * z4),
             static_cast<double>(error),
             spec.module_1_mm * static_cast<double>(s12) / 2.0,
-            std::fabs(std::log((static_cast<double>(z1) / z2) / (static_cast<double>(z3) / z4)))});
+            std::fabs(std::log((static_cast<double>(z1) / z2) / (static_cast<double>(z3) / z4)))},
+            spec.max_results, better_reducer);
       }
     }
   }
-  std::sort(found.begin(), found.end(), [](const CoaxialReducer& a, const CoaxialReducer& b) {
-    if (a.relative_error != b.relative_error) return a.relative_error < b.relative_error;
-    if (a.stage_imbalance != b.stage_imbalance) return a.stage_imbalance < b.stage_imbalance;
-    if (a.centre_distance_mm != b.centre_distance_mm) return a.centre_distance_mm < b.centre_distance_mm;
-    return std::tie(a.z1, a.z2, a.z3) < std::tie(b.z1, b.z2, b.z3);
-  });
-  if (found.size() > spec.max_results) found.resize(spec.max_results);
+  keep_best(found, spec.max_results, better_reducer);
   return found;
 }
 
@@ -119,16 +144,13 @@ std::vector<Planetary> synthesise_planetary(const PlanetarySpec& spec) {
       if (ratio.sign() != spec.target_ratio.sign()) continue;
       const double error = relative_error(ratio, spec.target_ratio);
       if (error > spec.tolerance) continue;
-      found.push_back(Planetary{zs, zp, zr, boost::multiprecision::numerator(ratio).convert_to<long long>(),
-                                boost::multiprecision::denominator(ratio).convert_to<long long>(), error});
+      add_candidate(found,
+                    Planetary{zs, zp, zr, boost::multiprecision::numerator(ratio).convert_to<long long>(),
+                              boost::multiprecision::denominator(ratio).convert_to<long long>(), error},
+                    spec.max_results, better_planetary);
     }
   }
-  std::sort(found.begin(), found.end(), [](const Planetary& a, const Planetary& b) {
-    if (a.relative_error != b.relative_error) return a.relative_error < b.relative_error;
-    if (a.z_ring != b.z_ring) return a.z_ring < b.z_ring;
-    return a.z_sun < b.z_sun;
-  });
-  if (found.size() > spec.max_results) found.resize(spec.max_results);
+  keep_best(found, spec.max_results, better_planetary);
   return found;
 }
 

@@ -244,6 +244,13 @@ PowerFlow analyse_power_flow(const TrainModel& model, const std::vector<Conditio
     const double p_in = *flow.power_losses_W[*input];
     if (p_in > 0) {
       flow.efficiency = -*flow.power_losses_W[output] / p_in;
+      // With losses the output takes power in too: no torque at the input alone moves the train
+      // this way (a back-driven Wolfrom train with a low eta_0 locks).
+      if (*flow.efficiency <= 0)
+        flow.warnings.push_back(fmt::format(
+            "self-locking: with the mesh losses the input '{}' cannot drive the output '{}' (efficiency {:.4f} <= 0: "
+            "the load would have to drive the train as well)",
+            model.member(*input).name, model.member(output).name, *flow.efficiency));
     } else {
       flow.warnings.push_back(fmt::format("the input '{}' receives power instead of giving it (back-driven)",
                                           model.member(*input).name));

@@ -100,6 +100,30 @@ TorqueLaw read_law(const YAML::Node& node, const std::string& file, const std::s
   return law;
 }
 
+namespace {
+
+// The one place a torque table becomes a periodic curve: libdyn's preconditions (rows in order,
+// at most two at one angle, the end value equal to the start value) become errors at the table.
+gd::PiecewiseLinear periodic_table(const TorqueLaw& law, std::vector<double> angle) {
+  double scale = 0;
+  for (double t : law.torque) scale = std::max(scale, std::abs(t));
+  if (std::abs(law.torque.front() - law.torque.back()) > 1e-9 * scale)
+    io::fail_at(law.row_marks.back(),
+                fmt::format("{} is not periodic: {:g} N*m at {} but {:g} N*m at {}; end the table with the "
+                            "value it starts with (a jump is two rows at the same angle)",
+                            law.what, law.torque.front(), show_deg(law.angle.front()), law.torque.back(),
+                            show_deg(law.angle.back())));
+  std::vector<double> torque = law.torque;
+  torque.back() = torque.front();  // equal within 1e-9: exactly equal for the curve
+  try {
+    return gd::PiecewiseLinear(std::move(angle), std::move(torque), true);
+  } catch (const std::invalid_argument& e) {
+    io::fail_at(law.mark, fmt::format("{}: {}", law.what, e.what()));
+  }
+}
+
+}  // namespace
+
 gd::PiecewiseLinear curve_of(const TorqueLaw& law, double cycle) {
   gd::PiecewiseLinear curve = gd::PiecewiseLinear::constant(law.value, 0, cycle);
   switch (law.kind) {
@@ -114,18 +138,10 @@ gd::PiecewiseLinear curve_of(const TorqueLaw& law, double cycle) {
         io::fail_at(law.mark, fmt::format("{}: the table must run over one cycle, from 0 to {}; found {} to {}",
                                           law.what, show_deg(cycle), show_deg(law.angle.front()),
                                           show_deg(law.angle.back())));
-      double scale = 0;
-      for (double t : law.torque) scale = std::max(scale, std::abs(t));
-      if (std::abs(law.torque.front() - law.torque.back()) > 1e-9 * scale)
-        io::fail_at(law.row_marks.back(),
-                    fmt::format("{} is not periodic: {:g} N*m at {} but {:g} N*m at {}; end the table with the "
-                                "value it starts with (a jump is two rows at the same angle)",
-                                law.what, law.torque.front(), show_deg(law.angle.front()), law.torque.back(),
-                                show_deg(law.angle.back())));
       std::vector<double> x = law.angle;
       x.front() = 0;
       x.back() = cycle;
-      curve = gd::PiecewiseLinear(std::move(x), law.torque, true);
+      curve = periodic_table(law, std::move(x));
       break;
     }
     case TorqueLaw::Kind::expression: {
@@ -166,7 +182,7 @@ std::function<double(double, double, double)> function_of(const TorqueLaw& law) 
       std::vector<double> x = law.angle;
       const double base = x.front();
       for (double& v : x) v -= base;
-      auto curve = std::make_shared<gd::PiecewiseLinear>(gd::PiecewiseLinear(std::move(x), law.torque, true));
+      auto curve = std::make_shared<gd::PiecewiseLinear>(periodic_table(law, std::move(x)));
       return [curve, k](double th, double, double) { return k * (*curve)(th); };
     }
     case TorqueLaw::Kind::expression: {

@@ -18,6 +18,7 @@
 #include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/drawing.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/error.hpp>
 
 #include <fmt/format.h>
@@ -106,8 +107,19 @@ Request read_request(const io::po::variables_map& vm) {
   io::fail_option(fmt::format("--{}", option), message);
 }
 
+// A drawing holds every tooth flank as a polyline: about 50 kB of memory per tooth.
+void check_drawn_teeth(const GearCommandOptions& options) {
+  const long long z1 = options.input.z1, z2 = std::abs(options.input.z2);
+  const long long drawn = options.draw == "gear1" ? z1 : options.draw == "gear2" ? z2 : z1 + z2;
+  if (drawn > io::limits::kDrawnTeeth)
+    io::fail_option(options.svg.empty() ? "--dxf" : "--svg",
+                    fmt::format("expected at most {} teeth to draw, found {} (--draw {}); draw one gear or none",
+                                io::limits::kDrawnTeeth, drawn, options.draw));
+}
+
 void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, const gg::GearPairResult& result) {
   if (options.svg.empty() && options.dxf.empty()) return;
+  check_drawn_teeth(options);
   const io::Drawing drawing = gear_drawing(options.input, result, options.draw);
   if (!options.svg.empty()) {
     io::SvgOptions svg;

@@ -10,6 +10,7 @@
 
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/quantity.hpp>
 #include <gearkit/io/report.hpp>
 #include <gearkit/train/assembly.hpp>
@@ -19,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <ostream>
@@ -61,6 +63,24 @@ struct Conditions {
   std::vector<Origin> origins;
   std::vector<std::optional<double>> input_speeds_rad_s;  // per input, in order
 };
+
+// External torques act only where the user acts on the train (torques.hpp): a torque given on any
+// other member has nothing to balance it, and every torque would come out indeterminate.
+void check_torque_member(const gt::TrainModel& model, const Conditions& c, gt::MemberId member, gt::MemberId output,
+                         const std::string& option) {
+  std::vector<std::string> allowed{model.member(output).name};
+  for (const gt::Condition& k : c.list) {
+    allowed.push_back(model.member(k.member).name);
+    if (k.kind == gt::Condition::Kind::couple) allowed.push_back(model.member(k.other).name);
+    if (k.member == member || (k.kind == gt::Condition::Kind::couple && k.other == member)) return;
+  }
+  if (member == output) return;
+  std::sort(allowed.begin(), allowed.end());
+  allowed.erase(std::unique(allowed.begin(), allowed.end()), allowed.end());
+  io::fail_option("--" + option,
+                  fmt::format("expected a member the train is driven, loaded, held or coupled at ({}), found {}",
+                              fmt::join(allowed, ", "), io::quote(model.member(member).name)));
+}
 
 Conditions gather_conditions(const gt::TrainModel& model, const po::variables_map& vm, const FileAnalysis& file) {
   Conditions c;
@@ -236,6 +256,12 @@ void add_ratio(io::Report& report, const gt::TrainModel& model, const gt::SpeedS
 
 void add_modes(io::Report& report, const gt::TrainModel& model, const Conditions& c, gt::MemberId input,
                gt::MemberId output) {
+  std::size_t candidates = 0;  // members a mode may hold or couple: n holds and n(n-1)/2 pairs
+  for (gt::MemberId m = 1; m < model.member_count(); ++m) candidates += !model.is_planet(m) && m != input && m != output;
+  if (candidates > io::limits::kModesMembers)
+    io::fail_option("--modes", fmt::format("expected at most {} members besides planets, input and output (modes hold "
+                                           "or couple each of them), found {}",
+                                           io::limits::kModesMembers, candidates));
   const auto modes = gt::transmission_modes(model, c.list, input, output);
   io::Table table{fmt::format("Modes: w_{} / w_{} with one more condition", model.member(output).name,
                               model.member(input).name),
@@ -447,6 +473,7 @@ int run_train_command(plugin::CommandContext& context) {
                                                  is_torque ? io::Quantity::torque : io::Quantity::power,
                                                  is_torque ? "N*m" : "W", fail);
     if (solution.inputs.empty()) io::fail_option("--" + option, "needs at least one --input MEMBER");
+    check_torque_member(model, conditions, member, *output, option);
     bool all_determined = true;
     for (const auto& sp : solution.speeds) all_determined = all_determined && sp.determined;
     if (!all_determined) {

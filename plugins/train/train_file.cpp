@@ -33,7 +33,10 @@ std::string member_name(const YAML::Node& node, const std::string& file, const s
 }
 
 void read_members(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldMarks>& marks) {
-  for (const YAML::Node& item : root.sequence("members")) {
+  const std::vector<YAML::Node> items = root.sequence("members");
+  // The ground is implicit: a train of nothing but the ground has nothing to turn.
+  if (items.empty()) io::fail_at(root.mark("members"), "'members': expected at least one member, found none");
+  for (const YAML::Node& item : items) {
     gt::MemberSpec spec;
     if (item.IsScalar()) {
       spec.name = member_name(item, root.file(), "a member name");

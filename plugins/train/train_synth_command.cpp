@@ -1,6 +1,7 @@
 #include "train_synth_command.hpp"
 
 #include <gearkit/io/command_line.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/quantity.hpp>
 #include <gearkit/io/report.hpp>
@@ -58,7 +59,9 @@ int integer_option(const po::variables_map& vm, const char* key, int fallback, i
 double tolerance_option(const po::variables_map& vm) {
   if (!vm.count("tolerance")) return 1e-6;
   const double t = vm["tolerance"].as<double>();
-  if (!(t >= 0 && t < 1)) io::fail_option("--tolerance", fmt::format("expected a relative tolerance in [0, 1), found {}", t));
+  if (!(t >= 0 && t <= io::limits::kSynthTolerance))
+    io::fail_option("--tolerance", fmt::format("expected a relative tolerance from 0 to {:g}, found {:g}",
+                                               io::limits::kSynthTolerance, t));
   return t;
 }
 
@@ -106,11 +109,12 @@ int run_reducer(plugin::CommandContext& context, const po::variables_map& vm, co
   if (spec.target_ratio <= 0)
     io::fail_option("--ratio", "expected a positive ratio (two external stages turn the output the same way)");
   spec.tolerance = tolerance_option(vm);
-  spec.z_min = integer_option(vm, "z-min", 12, 1, 10000);
-  spec.z_max = integer_option(vm, "z-max", 150, spec.z_min, 10000);
+  constexpr int teeth = io::limits::kSynthReducerTeeth;
+  spec.z_min = integer_option(vm, "z-min", 12, 1, teeth);
+  spec.z_max = integer_option(vm, "z-max", std::min(teeth, std::max(150, spec.z_min)), spec.z_min, teeth);
   if (vm.count("z1")) spec.z1 = integer_option(vm, "z1", 0, spec.z_min, spec.z_max);
   spec.equal_stages = vm.count("equal-stages") > 0;
-  spec.max_results = static_cast<std::size_t>(integer_option(vm, "max-results", 20, 1, 100000));
+  spec.max_results = static_cast<std::size_t>(integer_option(vm, "max-results", 20, 1, io::limits::kSynthResults));
 
   const auto found = gt::synthesise_coaxial_reducer(spec);
   io::Report report;
@@ -144,15 +148,16 @@ int run_planetary(plugin::CommandContext& context, const po::variables_map& vm, 
   if (spec.target_ratio == 0) io::fail_option("--ratio", "expected a non-zero ratio");
   spec.tolerance = tolerance_option(vm);
   spec.planets = integer_option(vm, "planets", 3, 1, 100);
-  spec.z_min = integer_option(vm, "z-min", 12, 1, 10000);
-  spec.z_max = integer_option(vm, "z-max", 150, spec.z_min, 10000);
-  spec.z_ring_max = integer_option(vm, "z-ring-max", 400, 1, 30000);
+  constexpr int teeth = io::limits::kSynthPlanetaryTeeth;
+  spec.z_min = integer_option(vm, "z-min", 12, 1, teeth);
+  spec.z_max = integer_option(vm, "z-max", std::min(teeth, std::max(150, spec.z_min)), spec.z_min, teeth);
+  spec.z_ring_max = integer_option(vm, "z-ring-max", 400, 1, teeth);
   spec.fixed = member_option(vm, "fixed", gt::PlanetaryMember::ring);
   spec.input = member_option(vm, "input", gt::PlanetaryMember::sun);
   spec.output = member_option(vm, "output-member", gt::PlanetaryMember::carrier);
   if (spec.fixed == spec.input || spec.fixed == spec.output || spec.input == spec.output)
     io::fail_option("--fixed", "expected --fixed, --input and --output-member to name three different members");
-  spec.max_results = static_cast<std::size_t>(integer_option(vm, "max-results", 20, 1, 100000));
+  spec.max_results = static_cast<std::size_t>(integer_option(vm, "max-results", 20, 1, io::limits::kSynthResults));
 
   const auto found = gt::synthesise_planetary(spec);
   const auto name = [](gt::PlanetaryMember m) {

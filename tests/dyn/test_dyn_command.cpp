@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <numbers>
 
 using gearkit::testing::count_lines;
@@ -240,4 +241,22 @@ TEST(DynCommand, Otm2015Problem1cReducedForce) {
   expect_bad_input(run_gearkit("dyn " + shell_quote(write_model("dead.yaml",
                    "reduced_force:\n  point_velocity: [0, 0]\n  terms:\n    - {name: w, mass: 1 kg, velocity: [0, 1]}\n").string())),
                    "dead point");
+}
+
+// Issue 11 item 7: the equation of motion built its own periodic curve from the resisting table
+// and libdyn refused it ("internal error: curve is not periodic", exit 1). A table that does not
+// end on its start value, or with three rows at one angle, is now an error at the table.
+TEST(DynCommand, ATorqueTableThatIsNotPeriodicIsAnErrorAtTheTable) {
+  std::ifstream in(fs::path(GEARKIT_SOURCE_DIR) / "examples" / "dynamics" / "paper_tube_cutter.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string model = text.str();
+  std::string open = model;
+  open.replace(open.find("- [0 rev, 22.5 N*m]"), 19, "- [0 rev, 0 N*m]");
+  const fs::path p = write_model("open_table.yaml", open);
+  expect_bad_input(run_gearkit("dyn " + shell_quote(p.string())), p.string() + ":31:");
+  std::string triple = model;
+  triple.replace(triple.find("- [10 rev, 22.5 N*m]"), 20, "- [10 rev, 22.5 N*m]\n      - [10 rev, 30 N*m]\n      - [10 rev, 22.5 N*m]");
+  const fs::path q = write_model("triple_row.yaml", triple);
+  expect_bad_input(run_gearkit("dyn " + shell_quote(q.string())), q.string() + ":");
 }

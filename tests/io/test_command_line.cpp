@@ -18,7 +18,8 @@ struct Parsed {
 Parsed parse(std::vector<std::string> args) {
   po::options_description desc("test");
   add_common_options(desc);
-  desc.add_options()("z1", po::value<int>(), "teeth");
+  desc.add_options()("z1", po::value<int>(), "teeth")("eta", po::value<double>(), "efficiency")(
+      "svg", po::value<std::string>(), "drawing");
   po::positional_options_description pos;
   pos.add("file", 1);
   desc.add_options()("file", po::value<std::string>(), "model");
@@ -75,4 +76,41 @@ TEST(CommandLine, StrictTurnsWarningsIntoStatus3) {
   EXPECT_EQ(emit(r, strict, out), 3);
   r.warnings.clear();
   EXPECT_EQ(emit(r, strict, out), 0);
+}
+
+// Issue 11 items 6, 7, 11: an empty value is refused, not read as "not given"; Boost's double
+// options take nan, inf and 1e300, which would reach the computation; a missing positional
+// argument is named as the usage shows it, not as the internal option '--file'.
+TEST(CommandLine, EmptyNonFiniteAndMissingValuesAreRefusedWhereTheyEnter) {
+  EXPECT_EQ(error_of({"a.yaml", "--svg", ""}), "option '--svg': expected a value, found an empty one");
+  EXPECT_EQ(error_of({""}), "the FILE argument: expected a value, found an empty one");
+  EXPECT_NE(error_of({"a.yaml", "--output="}).find("'--output'"), std::string::npos);
+  for (const char* bad : {"nan", "inf", "-inf", "1e300", "1e-300"})
+    EXPECT_NE(error_of({"a.yaml", "--eta", bad}).find("option '--eta': expected a finite number of size 0 or between"),
+              std::string::npos)
+        << bad;
+  EXPECT_EQ(error_of({"a.yaml", "--eta", "0.9"}), "");
+  EXPECT_EQ(error_of({"a.yaml", "--strict"}), "");  // a flag has no value to be empty
+}
+
+TEST(CommandLine, ABadValueIsQuotedShortOnOneLine) {
+  const std::string m = error_of({"a.yaml", "--z1", std::string(100000, '9') + "\nx"});
+  EXPECT_NE(m.find("'--z1'"), std::string::npos) << m;
+  EXPECT_LT(m.size(), 200u) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+}
+
+TEST(CommandLine, AMissingPositionalArgumentIsNamedAsInTheUsage) {
+  po::options_description desc("test");
+  desc.add_options()("file", po::value<std::string>()->required(), "model");
+  po::positional_options_description pos;
+  pos.add("file", 1);
+  po::variables_map vm;
+  std::ostringstream out;
+  try {
+    parse_command_line({}, desc, pos, vm, "gearkit test FILE", out);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "expected the FILE argument, found none; usage: gearkit test FILE");
+  }
 }

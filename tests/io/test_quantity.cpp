@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 using gearkit::io::parse_quantity_si;
 using gearkit::io::Quantity;
@@ -156,4 +158,27 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Quantity, DefaultUnitIsCheckedToo) {
   // A programming error in a field's declared default must not pass silently.
   EXPECT_THROW(parse_quantity_si("9", Quantity::length, "deg"), QuantityError);
+}
+
+// Issue 11 items 7 and 10: every quantity has a range (docs/units.md) far beyond any machine but
+// far inside double's, so that no accepted value can make a result overflow to inf or divide to
+// nan; the message names the range in SI.
+TEST(Quantity, SizesOutsideTheRangeAreRefused) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("10 km", Quantity::length, "mm"), 1e4);  // the largest length
+  EXPECT_DOUBLE_EQ(parse_quantity_si("0 mm", Quantity::length, "mm"), 0.0);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("-210 GPa", Quantity::pressure, "MPa"), -210e9);  // a modulus fits
+  for (const auto& [text, q] : std::vector<std::pair<std::string, Quantity>>{
+           {"1e200", Quantity::length}, {"1e-300", Quantity::dimensionless}, {"4.9e-324", Quantity::length}, {"1e-400", Quantity::length},
+           {"1e300", Quantity::dimensionless}, {"1e9 rpm", Quantity::angular_velocity}, {"-1e20 deg", Quantity::angle},
+           {"1e13 W", Quantity::power}}) {
+    try {
+      parse_quantity_si(text, q, q == Quantity::length ? "mm" : "");
+      ADD_FAILURE() << text << " was accepted";
+    } catch (const QuantityError& e) {
+      EXPECT_NE(std::string(e.what()).find("of size 0 or between"), std::string::npos) << e.what();
+    }
+  }
+  const auto range = gearkit::io::magnitude_range(Quantity::length);
+  EXPECT_EQ(range.si_unit, "m");
+  EXPECT_LT(range.largest * range.largest / range.smallest, 1e300);  // products stay finite
 }

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 using namespace gearkit::io;
 
 namespace {
@@ -64,4 +67,23 @@ TEST(Report, FixedDropsNegativeZero) {
   EXPECT_EQ(fixed(-0.0001, 3), "0.000");
   EXPECT_EQ(fixed(-1.23456, 3), "-1.235");
   EXPECT_EQ(fixed(2.5, 0), "2");  // round half to even, as printf does
+}
+
+// Issue 11 item 10: a non-finite number in a report is never silent. JSON keeps it as null (the
+// only JSON for it) and a warning names each quantity once, however many rows hold it.
+TEST(Report, NonFiniteResultsAreNamedInAWarning) {
+  Report r = sample();
+  r.json["ratio"] = std::numeric_limits<double>::infinity();
+  r.json["stages"] = nlohmann::json::array({{{"n_rpm", 1.0}}, {{"n_rpm", std::nan("")}}, {{"n_rpm", std::nan("")}}});
+  Table shafts{"Shafts", {"shaft", "n [rpm]"}, {}};
+  shafts.add_row({"motor", "1440.00"});
+  shafts.add_row({"drum", fixed(std::nan(""), 2)});
+  shafts.add_row({"cutter", fixed(-std::numeric_limits<double>::infinity(), 2)});
+  r.tables.push_back(shafts);
+  const std::vector<std::string> names = non_finite_quantities(r);
+  EXPECT_EQ(names, (std::vector<std::string>{"'ratio'", "'stages[].n_rpm'", "'n [rpm]' in table 'Shafts'"}));
+  warn_non_finite(r);
+  ASSERT_EQ(r.warnings.size(), 4u);  // "undercut on gear 1" and three named quantities
+  EXPECT_EQ(r.warnings[1].rfind("non-finite result: 'ratio' is not a finite number", 0), 0u) << r.warnings[1];
+  EXPECT_TRUE(non_finite_quantities(sample()).empty());  // "36.000" and words like "info" are fine
 }

@@ -214,7 +214,7 @@ TEST(KinCommand, BadInput) {
   expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --at 10 --sweep 0:1:1"), "--at");
   expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --outputs nope"), "option '--outputs'");
   expect_bad_input(run_gearkit("kin " + shell_quote((dir / "missing.yaml").string())), "missing.yaml");
-  expect_bad_input(run_gearkit("kin"), "expected a mechanism file");
+  expect_bad_input(run_gearkit("kin"), "expected the FILE argument, found none");
   // A failed --plot leaves no file and says which option.
   expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --plot /nonexistent/dir/p.svg"), "--plot");
 }

@@ -51,6 +51,18 @@ TEST(Assembly, CentreDistanceFunctionIsUsed) {
   EXPECT_TRUE(coax->satisfied);
 }
 
+// Issue 11 item 8: two planets on a carrier that mesh no central gear read central[0] of an
+// empty list (a segfault). Nothing can be spaced against: the check says so.
+TEST(Assembly, PlanetsThatMeshNoCentralGearAreNotChecked) {
+  TrainDescription d;
+  d.members = {{"a", "ground", 1}, {"p", "a", 2}};
+  const auto checks = check_assembly(make_train_model(d));
+  const AssemblyCheck* spacing = find(checks, "equal spacing");
+  ASSERT_NE(spacing, nullptr);
+  EXPECT_FALSE(spacing->checked);
+  EXPECT_NE(spacing->detail.find("meshes no central gear"), std::string::npos) << spacing->detail;
+}
+
 // Equal spacing of a simple planetary: (z_s + z_r)/N integer.
 TEST(Assembly, EqualSpacingSimplePlanetary) {
   const TrainModel ok = make_train_model(simple_planetary(24, 18, 60, 1, 1, 3));  // 84/3 = 28

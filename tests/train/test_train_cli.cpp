@@ -330,3 +330,91 @@ TEST(TrainCli, AssemblyFailureIsAWarning) {
 }
 
 }  // namespace
+
+namespace {
+std::string model_file(const std::string& name, const std::string& text) {
+  const fs::path p = scratch() / name;
+  std::ofstream(p) << text;
+  return "'" + p.string() + "'";
+}
+}  // namespace
+
+// Issue 11 item 8: two planets on a carrier that mesh no central gear crashed the assembly check
+// (exit 139). The train is analysed; the spacing is reported as not checked.
+TEST(TrainCli, PlanetsMeshingNoCentralGearDoNotCrash) {
+  const CliRun run = gearkit("train " + model_file("lonely_planets.yaml",
+                                                    "members: [a, {name: p, carried_by: a, count: 2}]\n"
+                                                    "gears: []\nmeshes: []\n"));
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("not checked: the planet meshes no central gear"), std::string::npos) << run.out;
+}
+
+// Issue 11 item 11: a torque can only be given where the train is driven, loaded, held or
+// coupled (torques.hpp); on a planet of the Ravigneaux set every torque came out indeterminate
+// with exit 0 and a mesh table saying "no relative motion".
+TEST(TrainCli, TorqueOnAMemberNobodyActsOnIsRefused) {
+  const CliRun run = gearkit("train " + example("ravigneaux.yaml") + " --power short=136kW");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("option '--power': expected a member the train is driven, loaded, held or coupled at "
+                         "(ring, s1, s2), found 'short'"),
+            std::string::npos)
+      << run.err;
+  const CliRun ok = gearkit("train " + example("ravigneaux.yaml") + " --torque ring=-100");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(ok.out.find("indeterminate"), std::string::npos) << ok.out;
+}
+
+// Issue 11 item 11: a train of nothing but the implicit ground was "locked" with exit 0.
+TEST(TrainCli, AnEmptyTrainIsAnInputError) {
+  const CliRun run = gearkit("train " + model_file("empty.yaml", "members: []\ngears: []\nmeshes: []\n"));
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("empty.yaml:1:10: 'members': expected at least one member, found none"), std::string::npos)
+      << run.err;
+}
+
+// Issue 11 item 11: the Wolfrom train of examples/ driven backwards (ring2 in, sun out) with
+// eta_0 = 0.9 in every mesh. With losses the sun would take power in as well: the train locks,
+// which must be said, not shown as an "efficiency" of -1.74. Driven forwards it does not lock.
+TEST(TrainCli, ABackDrivenWolfromTrainIsSelfLocking) {
+  std::ifstream in(std::string(GEARKIT_SOURCE_DIR) + "/examples/trains/wolfrom.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string model = text.str();
+  for (const std::string efficiency : {", efficiency: 0.98", ", efficiency: 0.99", ", efficiency: 0.99"})
+    model.erase(model.find(efficiency), efficiency.size());
+  model.replace(model.find("input: sun = 3000 rpm"), 21, "input: ring2 = 100 rpm");
+  model.replace(model.find("output: ring2"), 13, "output: sun");
+  const CliRun back = gearkit("train " + model_file("wolfrom_back.yaml", model) +
+                              " --mesh-efficiency 0.9 --torque ring2=100 --format json");
+  EXPECT_EQ(back.status, 0) << back.err;
+  const auto j = nlohmann::json::parse(back.out);
+  EXPECT_LE(j["torques"]["efficiency"].get<double>(), 0.0);
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().rfind("self-locking:", 0) == 0;
+  EXPECT_TRUE(warned) << j["warnings"];
+  const CliRun forward = gearkit("train " + example("wolfrom.yaml") + " --torque sun=10");
+  EXPECT_EQ(forward.out.find("self-locking"), std::string::npos) << forward.out;
+}
+
+// Issue 11 item 9: with more than two degrees of freedom every mode leaves the train free; the
+// 100-stage train tried 19,900 pairs that all said so. Now it is said once. Too many members to
+// hold or couple is refused before any work.
+TEST(TrainCli, ModesOfAFreeTrainAreSaidOnceAndTheirNumberIsBounded) {
+  std::string free = "members: [a, b, c, d, e]\ngears:\n";
+  for (const std::string m : {"a", "b", "c", "d", "e"}) free += "  - {name: g" + m + ", member: " + m + ", z: 20}\n";
+  free += "meshes:\n  - {gears: [ga, gb]}\n";  // a-b geared; c, d, e free: 4 degrees of freedom
+  const CliRun once = gearkit("train " + model_file("free.yaml", free) + " --input a=1 --output-member b --modes");
+  EXPECT_EQ(once.status, 0) << once.err;
+  EXPECT_NE(once.out.find("any member held or pair coupled  2 degree(s) of freedom left in every mode"),
+            std::string::npos)
+      << once.out;
+  std::string chain = "members: [";
+  for (int i = 0; i <= 42; ++i) chain += (i ? ", m" : "m") + std::to_string(i);
+  chain += "]\ngears:\n";
+  for (int i = 0; i <= 42; ++i) chain += "  - {name: g" + std::to_string(i) + ", member: m" + std::to_string(i) + ", z: 20}\n";
+  chain += "meshes:\n";
+  for (int i = 0; i < 42; ++i) chain += "  - {gears: [g" + std::to_string(i) + ", g" + std::to_string(i + 1) + "]}\n";
+  const CliRun many = gearkit("train " + model_file("chain.yaml", chain) + " --input m0=1 --output-member m42 --modes");
+  EXPECT_EQ(many.status, 2);
+  EXPECT_NE(many.err.find("option '--modes': expected at most 40 members"), std::string::npos) << many.err;
+}

@@ -49,12 +49,22 @@ class QuantityError : public std::invalid_argument {
   ~QuantityError() override;
 };
 
+/// The sizes a value of a quantity may have, in SI (docs/units.md, "Ranges"): 0 or between
+/// `smallest` and `largest`. Bounds far beyond any machine keep every result finite.
+struct MagnitudeRange {
+  double smallest;
+  double largest;
+  std::string_view si_unit;  ///< "m", "rad/s"; empty for plain numbers
+};
+MagnitudeRange magnitude_range(Quantity q);
+
 /// Parses `text` into the SI value of quantity `expected` (m, rad, s, kg, N, N*m, J, W, m/s,
 /// m/s^2, rad/s, rad/s^2, kg*m^2, N/m, Pa; 1 for dimensionless).
 /// @param default_unit unit symbol applied to a bare number (e.g. "mm", "deg"); must itself be
 ///        valid for `expected`. Empty means a bare number is already SI.
-/// @throws QuantityError if the text is malformed, names an unknown unit, or has the wrong
-///         dimension (a length where an angle is expected).
+/// @throws QuantityError if the text is malformed, names an unknown unit, has the wrong
+///         dimension (a length where an angle is expected), or its size is outside
+///         magnitude_range(expected).
 double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit);
 
 /// The SI factor of a unit expression such as "mm", "rpm" or "kg*m^2", checked against

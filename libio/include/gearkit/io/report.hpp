@@ -36,6 +36,15 @@ struct Report {
 void render(const Report& report, Format format, std::ostream& out);
 std::string render(const Report& report, Format format);
 
+/// The quantities of a report that are not finite numbers, each named once: JSON keys as paths
+/// ("'stages[].ratio'", indices as []) and table cells reading nan/inf ("'n [rpm]' in table
+/// 'Shafts'").
+std::vector<std::string> non_finite_quantities(const Report& report);
+
+/// Adds a warning naming each non-finite quantity (docs/cli.md: a non-finite result is never
+/// silent). emit() calls it on every report, so a command need not.
+void warn_non_finite(Report& report);
+
 /// Fixed-point formatting with `digits` decimals; "-0.000" prints as "0.000".
 std::string fixed(double value, int digits);
 

@@ -85,7 +85,8 @@ struct TransmissionMode {
 /// Ratio w_output / w_input with each other non-planet member held fixed in turn, then with each
 /// pair of them coupled (the seed's "w_b = 0, w_45 = 0, w_b = w_45"). Only the couplings of
 /// `base` are kept (they are links of the machine, like "w_5 = w_1"); its fixes and inputs are
-/// what the modes replace, so they are ignored.
+/// what the modes replace, so they are ignored. When the train with those couplings has more
+/// than two degrees of freedom every mode leaves it free: a single entry then says so.
 std::vector<TransmissionMode> transmission_modes(const TrainModel& model, const std::vector<Condition>& base,
                                                  MemberId input, MemberId output);
 
