@@ -67,7 +67,7 @@ mechanism::DriverRange parse_sweep(const std::string& text, io::Quantity q, std:
 }
 
 // The work of a sweep grows with positions times coordinates (docs/cli.md, "Limits").
-void check_sweep_work(const kin::Model& m, const io::DriverRange& r, const std::string& where) {
+void check_sweep_work(const kin::Model& m, const mechanism::DriverRange& r, const std::string& where) {
   const double positions = std::floor(std::abs(r.end - r.start) / r.step) + 1;
   const double work = positions * m.coordinates();
   if (work > io::limits::kSweepWork)

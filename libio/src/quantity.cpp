@@ -297,7 +297,7 @@ MagnitudeRange magnitude_range(Quantity q) {
     case Quantity::dimensionless: return {kFloor, 1e9, ""};
     case Quantity::length: return {kFloor, 1e4, "m"};
     case Quantity::angle: return {kFloor, 1e7, "rad"};
-    case Quantity::time: return {kFloor, 1e8, "s"};
+    case Quantity::time: return {kFloor, 1e10, "s"};  // a gear life of 1e6 h is 3.6e9 s
     case Quantity::mass: return {kFloor, 1e8, "kg"};
     case Quantity::force: return {kFloor, 1e12, "N"};
     case Quantity::torque: return {kFloor, 1e12, "N*m"};
@@ -310,6 +310,9 @@ MagnitudeRange magnitude_range(Quantity q) {
     case Quantity::moment_of_inertia: return {kFloor, 1e10, "kg*m^2"};
     case Quantity::stiffness: return {kFloor, 1e13, "N/m"};
     case Quantity::pressure: return {kFloor, 1e13, "Pa"};
+    case Quantity::damping: return {kFloor, 1e12, "N*s/m"};
+    case Quantity::torsional_stiffness: return {kFloor, 1e12, "N*m/rad"};
+    case Quantity::torsional_damping: return {kFloor, 1e12, "N*m*s/rad"};
   }
   return {kFloor, 1e9, ""};
 }

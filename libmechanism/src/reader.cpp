@@ -276,8 +276,8 @@ class Reader {
       range.step = r->size() == 3 ? scalar_quantity((*r)[2], doc_.file, q, unit)
                                   : std::abs(range.end - range.start) / 100.0;
       if (!(range.step > 0.0) || range.start == range.end) fail(*r, "expected a range with start != end and a step > 0");
-      if (std::abs(range.end - range.start) / range.step + 1 > limits::kSweepPositions)
-        fail(*r, fmt::format("expected at most {:g} positions in the range", limits::kSweepPositions));
+      if (std::abs(range.end - range.start) / range.step + 1 > io::limits::kSweepPositions)
+        fail(*r, fmt::format("expected at most {:g} positions in the range", io::limits::kSweepPositions));
       md.range = range;
     }
     d.finish();
