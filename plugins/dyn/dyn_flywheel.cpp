@@ -6,6 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <numbers>
+#include <tuple>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -93,6 +96,13 @@ io::Plot torque_plot(const gd::PiecewiseLinear& drive, const gd::PiecewiseLinear
                                  first_larger ? "" : label, surplus));
     }
   }
+  // Where the speed is highest and lowest, as vertical lines across the torques.
+  const double top = std::max(drive.max_value(), resist.max_value());
+  for (const auto& [theta, name, colour] : {std::tuple{c.theta_at_energy_max, "omega_max", "#2ca02c"},
+                                             std::tuple{c.theta_at_energy_min, "omega_min", "#9467bd"}}) {
+    const double deg = theta * 180.0 / std::numbers::pi;
+    panel.series.push_back({fmt::format("theta({}) = {:.2f} deg = {:.4f} rad", name, deg, theta), {deg, deg}, {0.0, top}, colour});
+  }
   plot.panels.push_back(std::move(panel));
   return plot;
 }
@@ -126,6 +136,26 @@ std::optional<double> integrated_fluctuation(const gd::PiecewiseLinear& drive, c
 }
 
 }  // namespace
+
+// A torque typed at its printed precision (M_r,max = 2158 N*m for 2158.033) leaves the cycle
+// unbalanced by a few parts in 10^5; up to kPrintedImbalance the resisting torque is scaled to
+// close the cycle, with a warning that states the imbalance. More than that is a wrong input.
+constexpr double kPrintedImbalance = 1e-3;
+
+void close_printed_cycle(const gd::PiecewiseLinear& drive, gd::PiecewiseLinear& resist, std::vector<std::string>& warnings) {
+  if (!drive.periodic() || !resist.periodic() || drive.range() <= 0.0) return;
+  const double e_drive = drive.integral(drive.x_front(), drive.x_front() + drive.range());
+  const double e_resist = resist.integral(resist.x_front(), resist.x_front() + resist.range());
+  const double larger = std::max(std::abs(e_drive), std::abs(e_resist));
+  const double imbalance = std::abs(e_drive - e_resist) / larger;
+  if (!(larger > 0.0) || e_resist == 0.0 || imbalance <= 1e-6 || imbalance > kPrintedImbalance) return;
+  const double k = e_drive / e_resist;
+  resist = resist.scaled(k);
+  warnings.push_back(fmt::format("flywheel: the cycle does not balance exactly: the driving torque does {:.6g} J per "
+                                 "cycle, the resisting torque takes {:.6g} J (relative imbalance {:.2g}, within the "
+                                 "precision of printed values); the resisting torque is scaled by {:.7f} to close it",
+                                 e_drive, e_resist, imbalance, k));
+}
 
 double motor_speed(const Model& model, const io::SourceMark& where, std::string_view question) {
   if (!model.motor.speed)
@@ -164,6 +194,7 @@ void add_flywheel(const Model& m, Output& out) {
     io::fail_at(q.mark, fmt::format("flywheel: {}", e.what()));
   }
 
+  if (!scale) close_printed_cycle(drive, resist, out.report.warnings);
   gd::CycleEnergy c;
   gd::FlywheelSizing s;
   try {
@@ -190,6 +221,9 @@ void add_flywheel(const Model& m, Output& out) {
   t.add_row({"omega_max", io::fixed(s.omega_max, 3), "rad/s"});
   t.add_row({"omega_min", io::fixed(s.omega_min, 3), "rad/s"});
   t.add_row({"mean driving torque", io::fixed(c.mean_drive_torque, 3), "N*m"});
+  // The same power on the motor shaft: T_motor = T_load (omega_load / omega_motor) / eta.
+  const double motor_torque = c.mean_drive_torque * gd::speed_ratio(m.line, 0, load) / gd::efficiency_between(m.line, 0, load);
+  t.add_row({"mean torque on the motor shaft", io::fixed(motor_torque, 3), "N*m"});
   t.add_row({"largest driving torque", io::fixed(drive.max_value(), 3), "N*m"});
   t.add_row({"largest resisting torque", io::fixed(resist.max_value(), 3), "N*m"});
   if (scale) t.add_row({balance_resist ? "resisting torque scale (balance)" : "driving torque scale (balance)",
@@ -240,6 +274,9 @@ void add_flywheel(const Model& m, Output& out) {
   j["omega_min_rad_s"] = s.omega_min;
   j["theta_at_omega_max_deg"] = c.theta_at_energy_max * rad_to_deg;
   j["theta_at_omega_min_deg"] = c.theta_at_energy_min * rad_to_deg;
+  j["theta_at_omega_max_rad"] = c.theta_at_energy_max;
+  j["theta_at_omega_min_rad"] = c.theta_at_energy_min;
+  j["motor_torque_Nm"] = motor_torque;
   j["energy_excursion_J"] = c.energy_excursion;
   j["energy_per_cycle_J"] = c.drive_energy;
   j["mean_drive_torque_Nm"] = c.mean_drive_torque;

@@ -63,11 +63,43 @@ TEST(DynCommand, Otm2015Problem4Flywheel) {
   EXPECT_NEAR(j["omega_min_rad_s"].get<double>(), 123.26, 0.005);
   EXPECT_NEAR(j["max_resisting_torque_Nm"].get<double>(), 2.158e3, 0.5);
   EXPECT_NEAR(j["theta_at_omega_max_deg"].get<double>() * pi / 180, 2.16, 0.005);
+  // Issue 16 item 7: angles in rad too (printed 2.16 and 5.105 rad) and the torque on the motor
+  // shaft, M_m = H / omega_2 = 100 kW / (2950 rpm) = 323.705 N*m (printed).
+  EXPECT_NEAR(j["theta_at_omega_max_rad"].get<double>(), 2.16, 0.005);
+  EXPECT_NEAR(j["theta_at_omega_min_rad"].get<double>(), 5.105, 0.0005);
+  EXPECT_NEAR(j["motor_torque_Nm"].get<double>(), 323.705, 0.0005);
   EXPECT_NEAR(j["theta_at_omega_min_deg"].get<double>() * pi / 180, 5.105, 0.0005);
   EXPECT_NEAR(j["energy_excursion_J"].get<double>(), 1.986e3, 0.5);
   EXPECT_NEAR(j["inertia_total_kgm2"].get<double>(), 26.016, 0.0005);
   EXPECT_NEAR(j["inertia_flywheel_kgm2"].get<double>(), 25.916, 0.0005);
   EXPECT_TRUE(j["warnings"].empty());
+}
+
+// Issue 16 item 8: the seed's printed M_r,max = 2158 N*m (for 2158.033) typed as printed, in the
+// seed's spelling: accepted with a warning stating the imbalance; the flywheel stays 25.916.
+TEST(DynCommand, PrintedResistingTorqueIsAcceptedWithAWarning) {
+  const fs::path p = write_model("printed.yaml", R"(title: printed M_r,max
+motor: {speed: 2950 min⁻¹, power: 100 kW}
+stages:
+  - {name: gear 2-3, teeth: [20, 50]}
+load:
+  name: load
+  inertia: 0.1 kg·m²
+  resisting:
+    table: [[0 deg, 0 N·m], [90 deg, 0 N·m], [180 deg, 2158 N·m], [360 deg, 0 N·m]]
+flywheel: {cycle: 360 deg, fluctuation: 0.5 %}
+)");
+  const auto j = run_json(shell_quote(p.string()));
+  EXPECT_NEAR(j["inertia_flywheel_kgm2"].get<double>(), 25.916, 0.0005);
+  ASSERT_EQ(j["warnings"].size(), 1u);
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("relative imbalance 1.5e-05"), std::string::npos) << j["warnings"][0];
+  // 2100 N*m is no printed 2158: refused as before.
+  std::string text = gearkit::testing::slurp(p);
+  text.replace(text.find("2158"), 4, "2100");
+  const fs::path bad = write_model("unbalanced.yaml", text);
+  const auto r = run_gearkit("dyn " + shell_quote(bad.string()));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("not steady"), std::string::npos) << r.err;
 }
 
 TEST(DynCommand, PaperTubeCutter) {
