@@ -13,10 +13,10 @@ using namespace gearkit::synth::testing;
 
 namespace {
 
-// The ten-point elliptic path of the four-bar path-synthesis benchmark (Acharyya & Mandal 2009,
-// Mechanism and Machine Theory 44: 1784-1794, case 3, after Ortiz et al.; also Yao et al. 2022,
-// Mechanical Sciences 13: 79-87): points every 40 deg on the ellipse of semi-axes 10 and 8 mm
-// about (10, 10) mm, first and last the same, no prescribed timing.
+// The ten-point elliptic path of the four-bar path-synthesis benchmark set (Acharyya & Mandal
+// 2009, Mechanism and Machine Theory 44; Yao et al. 2022, Mechanical Sciences 13: 79-87): points
+// every 40 deg on the ellipse of semi-axes 10 and 8 mm about (10, 10) mm, first and last the
+// same, no prescribed timing (the published coordinates, rounded as printed).
 std::vector<Vec2> ellipse_points() {
   const double xy[10][2] = {{20, 10},       {17.66, 15.142},   {11.736, 17.878}, {5, 16.928},      {0.60307, 12.736},
                             {0.60307, 7.2638}, {5, 3.0718},    {11.736, 2.1215}, {17.66, 4.8577}, {20, 10}};
