@@ -6,6 +6,8 @@
 #include <gearkit/synth/motion_generation.hpp>
 #include <gearkit/synth/path_generation.hpp>
 
+#include "synth_test_support.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -64,14 +66,7 @@ BENCHMARK(BM_ThreePosition_Search)->Unit(benchmark::kMillisecond);
 
 // Freudenstein's three precision points and 201 structural-error samples (log10 over [1, 2]).
 void BM_FunctionGeneration_Log10(benchmark::State& state) {
-  gs::FunctionTask t;
-  t.f = [](double x) { return std::log10(x); };
-  t.x_start = 1;
-  t.x_end = 2;
-  t.input_start = 90 * deg;
-  t.input_range = 60 * deg;
-  t.output_start = 225 * deg;
-  t.output_range = 60 * deg;
+  const gs::FunctionTask t = gs::testing::log10_task();
   for (auto _ : state) benchmark::DoNotOptimize(gs::synthesize_function(t).max_error);
 }
 BENCHMARK(BM_FunctionGeneration_Log10)->Unit(benchmark::kMicrosecond);

@@ -4,6 +4,7 @@
 #include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/solve.hpp>
 #include <gearkit/kin/sweep.hpp>
+#include <gearkit/synth/function_generation.hpp>
 #include <gearkit/synth/linkage.hpp>
 #include <gearkit/synth/motion_generation.hpp>
 
@@ -87,6 +88,21 @@ inline std::vector<Pose> reference_poses(const std::vector<double>& theta2) {
     poses.push_back({{d.output("Cx"), d.output("Cy")}, d.data->q[5]});  // coupler is body 1: q = (x, y, theta)
   }
   return poses;
+}
+
+/// y = log10(x) over [1, 2], crank 90 -> 150 deg, rocker 225 -> 285 deg, ground 100 mm
+/// (examples/synthesis/function_log10.yaml).
+inline FunctionTask log10_task() {
+  FunctionTask t;
+  t.f = [](double x) { return std::log10(x); };
+  t.x_start = 1;
+  t.x_end = 2;
+  t.input_start = 90 * deg;
+  t.input_range = 60 * deg;
+  t.output_start = 225 * deg;
+  t.output_range = 60 * deg;
+  t.ground = 0.1;
+  return t;
 }
 
 }  // namespace gearkit::synth::testing

@@ -25,21 +25,6 @@ std::vector<double> reference_psi(const std::vector<double>& phi) {
   return psi;
 }
 
-// y = log10(x) over [1, 2], crank 90 -> 150 deg, rocker 225 -> 285 deg, ground 100 mm
-// (examples/synthesis/function_log10.yaml).
-FunctionTask log10_task() {
-  FunctionTask t;
-  t.f = [](double x) { return std::log10(x); };
-  t.x_start = 1;
-  t.x_end = 2;
-  t.input_start = 90 * deg;
-  t.input_range = 60 * deg;
-  t.output_start = 225 * deg;
-  t.output_range = 60 * deg;
-  t.ground = 0.1;
-  return t;
-}
-
 }  // namespace
 
 TEST(FunctionGeneration, ChebyshevSpacingOfThreePoints) {
