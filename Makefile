@@ -7,7 +7,7 @@ CMAKE_FLAGS   ?=
 DEMO_DIR      ?= gearkit-demo
 GENERATOR     := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build demo test test-sanitize bench install clean
+.PHONY: all deps configure build demo test test-sanitize bench install clean fuzz
 
 all: build
 
@@ -32,6 +32,15 @@ test: build
 test-sanitize:
 	$(MAKE) test BUILD_DIR=build-sanitize BUILD_TYPE=RelWithDebInfo \
 	  CMAKE_FLAGS="-DGEARKIT_SANITIZE=ON -DGEARKIT_WERROR=ON"
+
+# Mutation fuzzing of the gearkit executable (tests/fuzz/fuzz.py): N cases from seed SEED, with
+# the past crashers of tests/fuzz/corpus; failing cases are saved in FUZZ_SAVE (corpus format).
+N         ?= 2000
+SEED      ?= 1
+FUZZ_SAVE ?= fuzz-failures
+fuzz: build
+	python3 tests/fuzz/fuzz.py --exe $(BUILD_DIR)/bin/gearkit --cases $(N) --seed $(SEED) --jobs $(JOBS) \
+	  --save $(FUZZ_SAVE)
 
 bench: deps
 	cmake -S . -B build-bench $(GENERATOR) -DCMAKE_BUILD_TYPE=Release -DGEARKIT_BUILD_BENCH=ON -DGEARKIT_BUILD_TESTS=OFF

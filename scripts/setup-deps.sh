@@ -12,7 +12,7 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libfmt-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-ezdxf
+  python3 python3-ezdxf python3-yaml
   universal-ctags
   libslvs1-dev
   libmuparser-dev
