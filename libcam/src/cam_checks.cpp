@@ -13,11 +13,10 @@ namespace {
 
 constexpr double two_pi = 2 * std::numbers::pi;
 
-bool folds_here(const CamDesign& d, const ContactState& c) {
-  if (d.follower.contact == Contact::flat_face) return !c.envelope_regular || !(c.curvature_profile > 0);
-  if (d.follower.contact == Contact::roller) return c.curvature_pitch * d.follower.roller_radius >= 1;
-  return false;
-}
+bool folds_here(const CamDesign&, const ContactState& c) { return c.folds; }
+
+/// +1 for a cam's own surface, -1 for a groove's outer wall (which bends the other way).
+double wall_sign(const CamDesign& d) { return d.follower.surface == Surface::groove_outer_wall ? -1 : 1; }
 
 /// The largest |pressure angle| at `samples` cam angles (a lower bound of the true largest);
 /// +infinity if a flat face's envelope folds there.
@@ -52,7 +51,7 @@ detail::Peak refine(double theta, double h, F&& f) {
 
 /// Replaces the sampled extremes of the checks with the extremes found near them.
 void refine_extremes(const CamDesign& d, double h, CamChecks& r) {
-  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
+  const double Rr = roller_radius(d), w = wall_sign(d);
   const bool flat = d.follower.contact == Contact::flat_face;
   {
     const detail::Peak p = refine(r.pressure_angle_max.theta, h,
@@ -66,10 +65,13 @@ void refine_extremes(const CamDesign& d, double h, CamChecks& r) {
   if (!flat && std::isfinite(r.rho_pitch_min.value)) {
     const detail::Peak p = refine(r.rho_pitch_min.theta, h, [&](double t) { return contact_at(d, t).curvature_pitch; });
     r.rho_pitch_min = {1 / p.value, p.x};
+  }
+  if (!flat && std::isfinite(r.rho_profile_min.value)) {
+    const detail::Peak p = refine(r.rho_profile_min.theta, h, [&](double t) { return w * contact_at(d, t).curvature_pitch; });
     r.rho_profile_min = {1 / p.value - Rr, p.x};
   }
   if (!flat && std::isfinite(r.rho_concave_min.value)) {
-    const detail::Peak p = refine(r.rho_concave_min.theta, h, [&](double t) { return -contact_at(d, t).curvature_pitch; });
+    const detail::Peak p = refine(r.rho_concave_min.theta, h, [&](double t) { return -w * contact_at(d, t).curvature_pitch; });
     r.rho_concave_min = {1 / p.value + Rr, p.x};
   }
 }
@@ -82,7 +84,7 @@ CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
   r.samples.reserve(n);
   r.rho_pitch_min.value = r.rho_profile_min.value = r.rho_concave_min.value = INFINITY;
   r.face_min = INFINITY, r.face_max = -INFINITY;
-  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
+  const double Rr = roller_radius(d), w = wall_sign(d);
   bool in_fold = false;
   for (int i = 0; i < n; ++i) {
     const double theta = d.program.start() + two_pi * i / n;
@@ -96,13 +98,12 @@ CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
       r.rho_pitch_min = r.rho_profile_min;
       r.face_min = std::min(r.face_min, c.face_position);
       r.face_max = std::max(r.face_max, c.face_position);
-    } else if (c.curvature_pitch > 0) {
-      const double rho = 1 / c.curvature_pitch;
-      if (rho < r.rho_pitch_min.value) r.rho_pitch_min = {rho, theta};
-      if (rho - Rr < r.rho_profile_min.value) r.rho_profile_min = {rho - Rr, theta};
-    } else if (c.curvature_pitch < 0) {
-      const double rho = -1 / c.curvature_pitch + Rr;
-      if (rho < r.rho_concave_min.value) r.rho_concave_min = {rho, theta};
+    } else {
+      if (c.curvature_pitch > 0 && 1 / c.curvature_pitch < r.rho_pitch_min.value)
+        r.rho_pitch_min = {1 / c.curvature_pitch, theta};
+      const double k = w * c.curvature_pitch;  // > 0 where the wall is convex towards the roller
+      if (k > 0 && 1 / k - Rr < r.rho_profile_min.value) r.rho_profile_min = {1 / k - Rr, theta};
+      if (k < 0 && -1 / k + Rr < r.rho_concave_min.value) r.rho_concave_min = {-1 / k + Rr, theta};
     }
     const bool fold = folds_here(d, c);
     if (fold && !in_fold) r.undercut_ranges.push_back({theta, theta});
@@ -114,6 +115,8 @@ CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
   refine_extremes(d, two_pi / n, r);
   r.radius_max = largest_radius(d);
   r.pressure_angle_exceeded = std::abs(r.pressure_angle_max.value) > options.pressure_angle_limit;
+  r.base_radius_min = NAN;  // the groove's outer wall and the conjugate cam follow from the first cam
+  if (d.follower.surface != Surface::cam) return r;
   try {
     r.base_radius_min = smallest_base_radius(d, options.pressure_angle_limit, std::min(n, 1440));
   } catch (const DesignError&) {

@@ -7,6 +7,8 @@
 // curvature are invariant under the rotation, so they are computed from q and q2 directly.
 #include <gearkit/cam/cam_design.hpp>
 
+#include "program_extremum.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -50,21 +52,32 @@ double beta_0(const CamDesign& d) {
 struct FixedFrame {
   Vec2 p, dp, d2p;
   Vec2 path;  // unit direction in which the follower point moves when s grows
+  Vec2 dpds;  // d(point)/ds
 };
 
+bool on_second_roller(const CamDesign& d) { return d.follower.surface == Surface::conjugate_cam; }
+
+/// The roller centre (knife tip) of the first roller, or of the second one on the conjugate cam.
 FixedFrame roller_centre(const CamDesign& d, const Motion& m) {
   const Follower& f = d.follower;
+  const bool second = on_second_roller(d);
   if (f.motion == FollowerMotion::translating) {
     const double Rp = prime_radius(d);
-    const double s0 = std::sqrt(Rp * Rp - f.offset * f.offset);
-    return {{f.offset, s0 + m.s}, {0, m.ds}, {0, m.d2s}, {0, 1}};
+    const double s0 = std::sqrt(Rp * Rp - f.offset * f.offset) - (second ? f.second.distance : 0);
+    return {{f.offset, s0 + m.s}, {0, m.ds}, {0, m.d2s}, {0, 1}, {0, 1}};
   }
-  const double a = f.pivot_distance, L = f.arm_length;
-  const double g = gamma_0(d) + m.s;
+  const double a = f.pivot_distance, L = second ? f.second.arm_length : f.arm_length;
+  const double g = gamma_0(d) + m.s + (second ? f.second.arm_angle : 0);
   const Vec2 dC{L * std::sin(g), L * std::cos(g)};
   const Vec2 d2C{L * std::cos(g), -L * std::sin(g)};
   return {{a - L * std::cos(g), L * std::sin(g)}, m.ds * dC, (m.ds * m.ds) * d2C + m.d2s * dC,
-          {std::sin(g), std::cos(g)}};
+          {std::sin(g), std::cos(g)}, dC};
+}
+
+double roller_radius_of(const CamDesign& d) {
+  if (d.follower.contact != Contact::roller) return 0;
+  if (on_second_roller(d) && d.follower.second.roller_radius > 0) return d.follower.second.roller_radius;
+  return d.follower.roller_radius;
 }
 
 void pitch_follower(const CamDesign& d, ContactState& c) {
@@ -79,11 +92,20 @@ void pitch_follower(const CamDesign& d, ContactState& c) {
   c.pressure_angle = std::atan2(dot(q, f.path), std::abs(cross(q, f.path)));
   // The pitch curve runs clockwise for a counter-clockwise cam: convex = negative cross product.
   c.curvature_pitch = -sigma * cross(q, q2) / (qn * qn * qn);
-  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
-  const Vec2 outward = rotate((sigma / qn) * J(q), -sigma * c.theta);
-  c.contact = c.pitch - Rr * outward;
-  const double denominator = 1 - Rr * c.curvature_pitch;
-  c.curvature_profile = denominator == 0 ? INFINITY : c.curvature_pitch / denominator;
+  const double Rr = roller_radius_of(d);
+  // The wall: +1 the cam (inner wall of a groove), -1 the groove's outer wall, which lies beyond
+  // the roller and touches it from outside.
+  const double w = d.follower.surface == Surface::groove_outer_wall ? -1 : 1;
+  const Vec2 outward_fixed = (sigma / qn) * J(q);  // from the cam side of the pitch curve outwards
+  c.normal = w * outward_fixed;
+  c.contact_fixed = f.p - Rr * c.normal;
+  c.contact = rotate(c.contact_fixed, -sigma * c.theta);
+  // Curvature of the wall as the roller sees it (> 0 convex towards the roller).
+  const double denominator = 1 - w * Rr * c.curvature_pitch;
+  c.curvature_profile = denominator == 0 ? INFINITY : w * c.curvature_pitch / denominator;
+  c.folds = Rr > 0 && w * Rr * c.curvature_pitch >= 1;
+  c.point_per_s = f.dpds;
+  c.spin_per_s = d.follower.motion == FollowerMotion::oscillating ? -1 : 0;
 }
 
 /// Flat faces: the profile is the envelope of the face lines N.X = h in the cam frame. With the
@@ -118,14 +140,20 @@ void flat_follower(const CamDesign& d, ContactState& c) {
   c.pitch_tangent = rotate((rho * dalpha) * J(N), -sigma * c.theta);
   c.curvature_profile = rho == 0 ? INFINITY : 1 / rho;
   c.curvature_pitch = c.curvature_profile;
+  c.folds = !c.envelope_regular || !(c.curvature_profile > 0);
+  c.contact_fixed = X;
+  c.normal = N;
   if (d.follower.motion == FollowerMotion::translating) {
     c.face_position = X.x - d.follower.offset;
     c.pressure_angle = 0;  // the face normal is the direction of travel
+    c.point_per_s = {0, 1};
   } else {
     const Vec2 A{d.follower.pivot_distance, 0};
     c.face_position = dot(X - A, u);
     const Vec2 path = J(X - A);
     c.pressure_angle = std::atan2(std::abs(cross(N, path)), std::abs(dot(N, path)));
+    c.spin_per_s = -1;  // the face turns by -psi (beta = beta_0 - psi)
+    c.point_per_s = c.spin_per_s * path;
   }
 }
 
@@ -133,18 +161,68 @@ void require(bool ok, const char* field, const std::string& message) {
   if (!ok) throw DesignError(field, message);
 }
 
+/// A groove or a conjugate cam needs rollers; the second roller must stay clear of the cam
+/// centre and push the follower back (its lever n . dp/ds < 0 all round: the conjugate cam can
+/// only push, like the first).
+void validate_closure(const CamDesign& d) {
+  const Follower& f = d.follower;
+  if (f.closure == Closure::spring) return;
+  require(f.contact == Contact::roller, "closure",
+          "a groove or conjugate cam needs a roller follower (contact: roller)");
+  if (f.closure != Closure::conjugate) return;
+  const SecondRoller& r = f.second;
+  require(std::isfinite(r.roller_radius) && r.roller_radius >= 0, "second_roller",
+          fmt::format("expected a second roller radius >= 0, found {:.6g} mm", r.roller_radius));
+  if (f.motion == FollowerMotion::translating) {
+    require(std::isfinite(r.distance) && r.distance > 0, "second_roller",
+            fmt::format("expected a distance between the rollers > 0, found {:.6g} mm", r.distance));
+  } else {
+    require(std::isfinite(r.arm_length) && r.arm_length > 0, "second_roller",
+            fmt::format("expected a second arm length > 0, found {:.6g} mm", r.arm_length));
+    require(std::isfinite(r.arm_angle), "second_roller", "expected a finite angle between the arms");
+  }
+  const CamDesign second = conjugate_cam_of(d);
+  const double R2 = roller_radius_of(second);
+  auto clearance = [&](double theta) {  // the second roller must not reach the cam's centre
+    const ContactState c = contact_at(second, theta);
+    return -(norm(c.follower_point) - R2);
+  };
+  const detail::Peak worst = detail::maximum_over_turn(d.program, clearance, 360);
+  require(-worst.value > 0, "second_roller",
+          fmt::format("the second roller reaches the cam centre at cam angle {:.6g} deg: no conjugate cam fits "
+                      "(move the second roller away)", worst.x * 180 / pi));
+  auto lever = [&](double theta) {
+    const ContactState c = contact_at(second, theta);
+    return dot(c.normal, c.point_per_s);
+  };
+  const detail::Peak same_way = detail::maximum_over_turn(d.program, lever, 360);
+  require(same_way.value < 0, "second_roller",
+          fmt::format("the second roller does not close the joint: at cam angle {:.6g} deg its cam would push the "
+                      "follower the same way as the first (put it on the other side of the cam centre)",
+                      same_way.x * 180 / pi));
+}
+
+void validate_geometry(const CamDesign& d);
+
 }  // namespace
 
 void validate(const CamDesign& d) {
+  validate_geometry(d);
+  validate_closure(d);
+}
+
+namespace {
+
+void validate_geometry(const CamDesign& d) {
   const Follower& f = d.follower;
   require(std::isfinite(d.base_radius) && d.base_radius > 0, "base_radius",
-          fmt::format("expected a base circle radius > 0, found {} mm", d.base_radius));
+          fmt::format("expected a base circle radius > 0, found {:.6g} mm", d.base_radius));
   require(std::isfinite(f.roller_radius) && f.roller_radius >= 0, "roller_radius",
-          fmt::format("expected a roller radius >= 0, found {} mm", f.roller_radius));
+          fmt::format("expected a roller radius >= 0, found {:.6g} mm", f.roller_radius));
   if (f.contact == Contact::roller) {
     require(f.roller_radius > 0, "roller_radius", "a roller follower needs a roller radius > 0");
     require(d.base_radius >= f.roller_radius, "base_radius",
-            fmt::format("expected a base circle radius >= the roller radius ({} mm), found {} mm", f.roller_radius,
+            fmt::format("expected a base circle radius >= the roller radius ({:.6g} mm), found {:.6g} mm", f.roller_radius,
                         d.base_radius));
   }
   const double Rp = prime_radius(d);
@@ -153,34 +231,50 @@ void validate(const CamDesign& d) {
     require(std::isfinite(f.offset), "offset", "expected a finite offset");
     if (f.contact != Contact::flat_face) {
       require(std::abs(f.offset) < Rp, "offset",
-              fmt::format("expected |offset| < base radius + roller radius = {} mm, found {} mm", Rp, f.offset));
+              fmt::format("expected |offset| < base radius + roller radius = {:.6g} mm, found {:.6g} mm", Rp, f.offset));
     }
     return;
   }
   const double a = f.pivot_distance, L = f.arm_length;
-  require(std::isfinite(a) && a > 0, "pivot_distance", fmt::format("expected a pivot distance > 0, found {} mm", a));
+  require(std::isfinite(a) && a > 0, "pivot_distance", fmt::format("expected a pivot distance > 0, found {:.6g} mm", a));
   require(max_s < pi, "motion",
-          fmt::format("an oscillating follower's lift is an angle; expected less than 180 deg, found {} deg",
+          fmt::format("an oscillating follower's lift is an angle; expected less than 180 deg, found {:.6g} deg",
                       max_s * 180 / pi));
   if (f.contact == Contact::flat_face) {
     require(std::isfinite(f.face_offset), "face_offset", "expected a finite face offset");
     require(std::abs(f.face_offset - d.base_radius) < a, "pivot_distance",
-            fmt::format("the flat face cannot reach the base circle: |face_offset - base_radius| = {} mm must be "
-                        "less than the pivot distance {} mm",
+            fmt::format("the flat face cannot reach the base circle: |face_offset - base_radius| = {:.6g} mm must be "
+                        "less than the pivot distance {:.6g} mm",
                         std::abs(f.face_offset - d.base_radius), a));
     require(beta_0(d) - max_s > -pi / 2, "motion",
-            fmt::format("the face would swing past the cam centre line: arm angle {} deg at full lift",
+            fmt::format("the face would swing past the cam centre line: arm angle {:.6g} deg at full lift",
                         (beta_0(d) - max_s) * 180 / pi));
     return;
   }
-  require(std::isfinite(L) && L > 0, "arm_length", fmt::format("expected an arm length > 0, found {} mm", L));
+  require(std::isfinite(L) && L > 0, "arm_length", fmt::format("expected an arm length > 0, found {:.6g} mm", L));
   require(std::abs(a - L) < Rp && Rp < a + L, "pivot_distance",
-          fmt::format("the follower cannot reach the cam: the prime circle radius {} mm must lie between "
-                      "|pivot_distance - arm_length| = {} mm and pivot_distance + arm_length = {} mm",
+          fmt::format("the follower cannot reach the cam: the prime circle radius {:.6g} mm must lie between "
+                      "|pivot_distance - arm_length| = {:.6g} mm and pivot_distance + arm_length = {:.6g} mm",
                       Rp, std::abs(a - L), a + L));
   require(gamma_0(d) + max_s < pi, "arm_length",
-          fmt::format("the arm would swing through the line of centres: {} deg + lift {} deg >= 180 deg",
+          fmt::format("the arm would swing through the line of centres: {:.6g} deg + lift {:.6g} deg >= 180 deg",
                       gamma_0(d) * 180 / pi, max_s * 180 / pi));
+}
+
+}  // namespace
+
+double roller_radius(const CamDesign& design) { return roller_radius_of(design); }
+
+CamDesign outer_wall_of(const CamDesign& design) {
+  CamDesign d = design;
+  d.follower.surface = Surface::groove_outer_wall;
+  return d;
+}
+
+CamDesign conjugate_cam_of(const CamDesign& design) {
+  CamDesign d = design;
+  d.follower.surface = Surface::conjugate_cam;
+  return d;
 }
 
 ContactState contact_at(const CamDesign& design, double theta) {

@@ -57,24 +57,90 @@ std::vector<Piece> polyline_of(const CamDesign& d, int samples, double sigma) {
 
 }  // namespace
 
+namespace {
+
+/// The offsets of the fitted curve that will be exported, in the order given to the fit (after
+/// the curve itself, offset 0).
+struct Exports {
+  double profile = 0, tool = 0, outer = 0, outer_tool = 0;
+  bool has_profile = false, has_tool = false, has_outer = false, has_outer_tool = false;
+
+  std::vector<double> offsets() const {
+    std::vector<double> out;
+    if (has_profile) out.push_back(profile);
+    if (has_tool) out.push_back(tool);
+    if (has_outer) out.push_back(outer);
+    if (has_outer_tool) out.push_back(outer_tool);
+    return out;
+  }
+};
+
+Exports exports_of(const CamDesign& d, const ProfileOptions& options) {
+  Exports e;
+  const double Rr = roller_radius(d);
+  const bool groove = d.follower.closure == Closure::groove && d.follower.surface == Surface::cam;
+  e.has_profile = Rr > 0, e.profile = Rr;
+  e.has_tool = options.cutter_radius.has_value();
+  if (e.has_tool) e.tool = Rr - *options.cutter_radius;
+  e.has_outer = groove, e.outer = -Rr;
+  e.has_outer_tool = groove && e.has_tool, e.outer_tool = -e.tool;
+  return e;
+}
+
+/// A flat face's envelope, or a roller or knife edge's pitch curve, offset into what is exported.
+void offsets_from_spline(const CamDesign& d, const ProfileOptions& options, const Exports& e, const BiarcSpline& spline,
+                         CamProfile& out) {
+  std::size_t next = 1;
+  out.pitch_error = spline.max_error[0];
+  out.profile_error = e.has_profile ? spline.max_error[next++] : spline.max_error[0];
+  if (e.has_tool) out.tool_path_error = spline.max_error[next++];
+  if (e.has_outer) out.outer_error = spline.max_error[next++];
+  if (e.has_outer_tool) out.outer_tool_path_error = spline.max_error[next++];
+  if (d.follower.contact == Contact::flat_face) {
+    out.profile.push_back(pieces_of(spline));
+  } else {
+    out.pitch_curve = pieces_of(spline);
+    const OffsetCurve profile = offset_closed_spline(spline, e.profile);
+    out.profile = profile.loops;
+    out.profile_trimmed = profile.trimmed;
+  }
+  if (e.has_tool) {
+    const OffsetCurve tool = offset_closed_spline(spline, e.tool);
+    out.tool_path = tool.loops;
+    out.tool_path_trimmed = tool.trimmed && !out.profile_trimmed;
+  }
+  if (e.has_outer) {
+    const OffsetCurve outer = offset_closed_spline(spline, e.outer);
+    out.outer_wall = outer.loops;
+    out.outer_wall_trimmed = outer.trimmed;
+  }
+  if (e.has_outer_tool) {
+    const OffsetCurve tool = offset_closed_spline(spline, e.outer_tool);
+    out.outer_tool_path = tool.loops;
+    out.outer_tool_path_trimmed = tool.trimmed && !out.outer_wall_trimmed;
+  }
+  (void)options;
+}
+
+}  // namespace
+
 CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options) {
   CamProfile out;
   const double sigma = rotation_sign(d.rotation);
   const CounterClockwiseCurve curve{d, sigma};
-  const double Rr = d.follower.contact == Contact::roller ? d.follower.roller_radius : 0;
   // The tolerance must hold for what is exported: the profile (the pitch curve offset by the
-  // roller) and the tool path, not only for the fitted curve.
-  FitOptions fit{options.tolerance, 24, {}};
-  if (Rr > 0) fit.offsets.push_back(Rr);
-  if (options.cutter_radius) fit.offsets.push_back(Rr - *options.cutter_radius);
+  // roller), the groove's outer wall and the tool paths, not only for the fitted curve.
+  const Exports e = exports_of(d, options);
+  FitOptions fit{options.tolerance, 24, e.offsets()};
   BiarcSpline spline;
   try {
     spline = fit_biarcs(curve, breaks_of(d, sigma), fit, true);
-  } catch (const FitError& e) {
+  } catch (const FitError& err) {
     if (d.follower.contact != Contact::flat_face) {
       throw GeometryError(fmt::format("cannot fit arcs within {:.6g} mm to the cam near cam angle {:.6g} deg "
                                       "(a cusp or a corner of the profile)",
-                                      options.tolerance, std::fmod(curve.theta_of(e.parameter()), two_pi) * 180 / std::numbers::pi));
+                                      options.tolerance,
+                                      std::fmod(curve.theta_of(err.parameter()), two_pi) * 180 / std::numbers::pi));
     }
     // A flat face whose envelope has cusps: no arcs fit the folds; keep the envelope as it is.
     out.profile.push_back(polyline_of(d, 3600, sigma));
@@ -82,28 +148,7 @@ CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options)
     return out;
   }
   out.biarcs = spline.knots.size() - 1;
-  std::size_t next = 1;
-  out.pitch_error = spline.max_error[0];
-  out.profile_error = Rr > 0 ? spline.max_error[next++] : spline.max_error[0];
-  if (options.cutter_radius) out.tool_path_error = spline.max_error[next];
-  if (d.follower.contact == Contact::flat_face) {
-    out.profile.push_back(pieces_of(spline));
-    if (options.cutter_radius) {
-      const OffsetCurve tool = offset_closed_spline(spline, -*options.cutter_radius);
-      out.tool_path = tool.loops;
-      out.tool_path_trimmed = tool.trimmed;
-    }
-    return out;
-  }
-  out.pitch_curve = pieces_of(spline);
-  const OffsetCurve profile = offset_closed_spline(spline, Rr);
-  out.profile = profile.loops;
-  out.profile_trimmed = profile.trimmed;
-  if (options.cutter_radius) {
-    const OffsetCurve tool = offset_closed_spline(spline, Rr - *options.cutter_radius);
-    out.tool_path = tool.loops;
-    out.tool_path_trimmed = tool.trimmed && !profile.trimmed;
-  }
+  offsets_from_spline(d, options, e, spline, out);
   return out;
 }
 

@@ -22,6 +22,8 @@ std::vector<Vec2> analytic_profile(const CamDesign& d, int n) {
   return out;
 }
 
+double lever_sign(const CamDesign&, const ContactState& c) { return c.normal.x * c.point_per_s.x + c.normal.y * c.point_per_s.y; }
+
 double brute_deviation(const std::vector<std::vector<Piece>>& loops, const std::vector<Vec2>& pts) {
   double worst = 0;
   for (const Vec2& p : pts) {
@@ -285,6 +287,104 @@ TEST(CamProfile, StatedToleranceHoldsForTheExportedArcsBothWays) {
       EXPECT_LE(back, c.tolerance);
       EXPECT_LE(back, p.profile_error * (1 + 1e-9) + 1e-15);  // the found maximum is not below a sample
     }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+using namespace gearkit::cam;
+using gearkit::cam::testing::rad;
+using gearkit::cam::testing::translating;
+
+TEST(CamProfile, GrooveOuterWallIsTheRollerOffsetOutwards) {
+  // A groove (track) cam: both walls are the pitch curve offset by the roller radius, inwards and
+  // outwards; the outer wall's contact is contact_at(outer_wall_of(d)), R_r beyond the centre.
+  CamDesign d{gearkit::cam::testing::rise_dwell_return(20), translating(Contact::roller, 10), 40, Rotation::ccw};
+  d.follower.closure = Closure::groove;
+  validate(d);
+  const double tol = 1e-3;
+  const CamProfile p = synthesize_profile(d, {tol, 6.0});
+  ASSERT_FALSE(p.outer_wall.empty());
+  ASSERT_FALSE(p.outer_tool_path.empty());
+  EXPECT_LE(p.outer_error, tol);
+  EXPECT_LE(p.outer_tool_path_error, tol);
+  const CamDesign outer = outer_wall_of(d);
+  std::vector<Vec2> walls;
+  for (int i = 0; i < 3600; ++i) {
+    const ContactState in = contact_at(d, 2 * M_PI * i / 3600), out = contact_at(outer, 2 * M_PI * i / 3600);
+    walls.push_back(out.contact);
+    // The groove is 2 R_r wide along the common normal, and both walls see the same pressure angle.
+    EXPECT_NEAR(std::hypot(out.contact.x - in.contact.x, out.contact.y - in.contact.y), 20, 1e-9);
+    EXPECT_NEAR(out.pressure_angle, in.pressure_angle, 1e-12);
+    EXPECT_NEAR(out.normal.x, -in.normal.x, 1e-12);
+  }
+  EXPECT_LE(brute_deviation(p.outer_wall, walls), tol);
+  // The cutter (6 mm) runs inside the groove: 4 mm from the pitch curve on either side.
+  std::vector<Vec2> outer_tool;
+  for (int i = 0; i < 720; ++i) {
+    const ContactState c = contact_at(outer, 2 * M_PI * i / 720);
+    outer_tool.push_back({c.pitch.x + 4 * (c.contact.x - c.pitch.x) / 10, c.pitch.y + 4 * (c.contact.y - c.pitch.y) / 10});
+  }
+  EXPECT_LE(brute_deviation(p.outer_tool_path, outer_tool), tol);
+  // Outer-wall checks: concave where the pitch curve is convex, and the other way round.
+  const CamChecks inner_checks = check_design(d, {3600, rad(30)}), outer_checks = check_design(outer, {3600, rad(30)});
+  EXPECT_NEAR(outer_checks.rho_concave_min.value, inner_checks.rho_pitch_min.value + 10, 1e-6);
+  EXPECT_TRUE(std::isnan(outer_checks.base_radius_min));
+}
+
+TEST(CamProfile, TranslatingConjugateCamIsAnOrdinaryCamTurnedHalfARound) {
+  // Rollers D = 130 mm apart on one slider, the second below the cam centre: its cam is the
+  // ordinary cam for the motion S - s (starting where s = S), with s0_2 = D - s0 - S, drawn
+  // turned by 180 deg (an independent construction through the ordinary follower).
+  const double Rb = 40, Rr = 10, S = 20, D = 130;
+  CamDesign d{gearkit::cam::testing::rise_dwell_return(S), translating(Contact::roller, Rr), Rb, Rotation::ccw};
+  d.follower.closure = Closure::conjugate;
+  d.follower.second.distance = D;
+  validate(d);
+  using gearkit::cam::testing::dwell;
+  using gearkit::cam::testing::move;
+  const MotionProgram mirrored({dwell(120, 180), move(SegmentKind::rise, 180, 300, Law::cycloidal, S), dwell(300, 360),
+                                move(SegmentKind::fall, 360, 480, Law::cycloidal, S)});
+  const double s0_2 = D - (Rb + Rr) - S;
+  const CamDesign ordinary{mirrored, translating(Contact::roller, Rr), s0_2 - Rr, Rotation::ccw};
+  validate(ordinary);
+  const CamDesign second = conjugate_cam_of(d);
+  for (int i = 0; i < 360; ++i) {
+    const ContactState a = contact_at(second, rad(i)), b = contact_at(ordinary, rad(i));
+    EXPECT_NEAR(a.contact.x, -b.contact.x, 1e-9) << i;
+    EXPECT_NEAR(a.contact.y, -b.contact.y, 1e-9) << i;
+    EXPECT_LT(lever_sign(second, a), 0);  // the second cam pushes the follower back
+  }
+  const CamProfile p2 = synthesize_profile(second, {1e-3, std::nullopt});
+  std::vector<Vec2> expected;
+  for (int i = 0; i < 3600; ++i) {
+    const Vec2 c = contact_at(ordinary, 2 * M_PI * i / 3600).contact;
+    expected.push_back({-c.x, -c.y});
+  }
+  EXPECT_LE(brute_deviation(p2.profile, expected), 1e-3);
+}
+
+TEST(CamProfile, ConjugateSecondRollerOnTheSameSideIsRefused) {
+  CamDesign d{gearkit::cam::testing::rise_dwell_return(rad(20)), gearkit::cam::testing::oscillating(Contact::roller, 120, 90, 10),
+              40, Rotation::ccw};
+  d.follower.closure = Closure::conjugate;
+  d.follower.second.arm_length = 90;
+  d.follower.second.arm_angle = rad(5);  // nearly the first arm: pushes the same way
+  EXPECT_THROW(validate(d), DesignError);
+  // Across the line of centres, an arm of the same length at 100 deg: the second roller's
+  // distance from the cam centre follows the law of cosines, a^2 + L^2 - 2 a L cos(gamma).
+  d.follower.second.arm_angle = rad(-100);
+  validate(d);
+  const CamDesign second = conjugate_cam_of(d);
+  for (int i = 0; i < 360; i += 7) {
+    const ContactState c1 = contact_at(d, rad(i)), c2 = contact_at(second, rad(i));
+    const double gamma1 = std::atan2(c1.follower_point.y, 120 - c1.follower_point.x);  // the first arm's angle
+    const double gamma2 = gamma1 + rad(-100);
+    EXPECT_NEAR(std::hypot(c2.follower_point.x, c2.follower_point.y),
+                std::sqrt(120.0 * 120 + 90 * 90 - 2 * 120 * 90 * std::cos(gamma2)), 1e-9);
+    EXPECT_LT(lever_sign(second, c2), 0);
   }
 }
 

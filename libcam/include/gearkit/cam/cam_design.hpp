@@ -18,6 +18,25 @@ enum class FollowerMotion { translating, oscillating };
 enum class Contact { knife_edge, roller, flat_face };
 enum class Rotation { ccw, cw };
 
+/// How the follower is kept on the cam: by its spring (force closure), or by the cam itself
+/// (form closure): a groove whose two walls take the roller, or a conjugate cam pushing a second
+/// roller of the same follower back.
+enum class Closure { spring, groove, conjugate };
+
+/// Which surface contact_at() describes: the cam (the groove's inner wall), the groove's outer
+/// wall, or the conjugate cam (the second roller's).
+enum class Surface { cam, groove_outer_wall, conjugate_cam };
+
+/// The second roller of a conjugate pair, on the same follower.
+struct SecondRoller {
+  double roller_radius = 0;  ///< [mm]; 0: the same as the first roller
+  double arm_length = 0;     ///< oscillating: pivot to second roller centre [mm]
+  double arm_angle = 0;      ///< oscillating: angle of the second arm from the first, about the pivot, in the sense
+                             ///< psi grows [rad]
+  double distance = 0;       ///< translating: centre distance between the rollers along the axis, the second
+                             ///< roller on the cam centre's far side [mm]
+};
+
 struct Follower {
   FollowerMotion motion = FollowerMotion::translating;
   Contact contact = Contact::roller;
@@ -26,6 +45,9 @@ struct Follower {
   double pivot_distance = 0;  ///< oscillating: cam centre to pivot [mm]
   double arm_length = 0;      ///< oscillating: pivot to roller centre (or knife tip) [mm]
   double face_offset = 0;     ///< oscillating flat face: signed distance pivot to face line [mm]
+  Closure closure = Closure::spring;
+  SecondRoller second;        ///< conjugate cams (roller followers)
+  Surface surface = Surface::cam;  ///< the surface contact_at() describes (see outer_wall_of, conjugate_cam_of)
 };
 
 struct CamDesign {
@@ -47,13 +69,21 @@ class DesignError : public std::invalid_argument {
   std::string field_;
 };
 
+/// The same design seen on the groove's outer wall (contact_at gives the outer wall's contact:
+/// the normal reversed, the contact R_r beyond the roller centre).
+CamDesign outer_wall_of(const CamDesign& design);
+/// The same design seen on the conjugate cam (contact_at gives the second roller's contact).
+CamDesign conjugate_cam_of(const CamDesign& design);
+
 /// Checks that the follower can touch the cam everywhere.
 /// @throws DesignError for a negative or non-finite radius or length; a base circle not larger
 ///         than zero or smaller than the roller; a translating offset not smaller than the prime
 ///         circle radius; an oscillating follower whose roller cannot reach the prime circle
 ///         (|pivot_distance - arm_length| >= prime radius or pivot_distance + arm_length <= it),
 ///         or whose arm would swing through the line of centres (gamma_0 + max psi >= 180 deg);
-///         an oscillating flat face that cannot touch the base circle.
+///         an oscillating flat face that cannot touch the base circle; a groove or conjugate
+///         cam without a roller; a second roller that is missing, would reach the cam centre
+///         (closer than its radius) or would push the follower the same way as the first.
 void validate(const CamDesign& design);
 
 struct Vec2 {
@@ -73,10 +103,22 @@ struct ContactState {
   double curvature_profile = 0;  ///< 1/rho of the profile, > 0 convex [1/mm]
   double face_position = 0;  ///< flat face: contact along the face from the follower axis or pivot [mm]
   bool envelope_regular = true;  ///< oscillating flat face: the face normal turns monotonically here
+  bool folds = false;        ///< the profile folds here (undercut: the roller larger than the curve's radius,
+                             ///< a flat face's envelope with rho <= 0)
+  // Statics (fixed frame): what the dynamics needs.
+  Vec2 contact_fixed;        ///< the contact point [mm]
+  Vec2 normal;               ///< unit normal at the contact, from the cam into the follower
+  Vec2 point_per_s;          ///< displacement of the follower's point carrying the force (roller centre, knife
+                             ///< tip, face point at the contact) per unit of s [mm per mm or per rad]
+  double spin_per_s = 0;     ///< the follower's rotation per unit of s [rad per rad]: 0 translating, -1 oscillating
 };
 
 /// The contact geometry at cam angle theta. Requires validate(design) to have passed.
 ContactState contact_at(const CamDesign& design, double theta);
+
+/// The radius of the roller touching the surface contact_at() describes (the second roller's on
+/// the conjugate cam); 0 for knife edges and flat faces [mm].
+double roller_radius(const CamDesign& design);
 
 /// +1 for a counter-clockwise cam, -1 for clockwise.
 inline double rotation_sign(Rotation r) { return r == Rotation::ccw ? 1.0 : -1.0; }

@@ -7,6 +7,9 @@
 // - tool path of a cutter of radius R_c running outside the profile: the profile offset outwards
 //   by R_c. For roller cams this is the pitch region offset by R_c - R_r (same arcs, one CGAL
 //   offset), which equals the offset of the profile wherever the profile has no undercut.
+// - groove cams (Closure::groove): the outer wall too, the pitch curve offset outwards by R_r, and
+//   the cutter's path along it (offset outwards by R_r - R_c; the cutter runs inside the groove).
+// - conjugate cams: synthesize_profile(conjugate_cam_of(design), ...) gives the second cam.
 #include <gearkit/cam/arc_spline.hpp>
 #include <gearkit/cam/cam_design.hpp>
 
@@ -33,6 +36,11 @@ struct CamProfile {
   /// profile), profile, tool path (0 without a cutter). Where an offset folds and is trimmed
   /// (undercut, a cutter too large for a hollow) the trimmed-away arcs are not counted.
   double pitch_error = 0, profile_error = 0, tool_path_error = 0;
+  /// Groove cams: the outer wall (the pitch curve offset outwards by the roller) and the cutter's
+  /// path along it; the profile and tool path above are the inner wall's.
+  std::vector<std::vector<Piece>> outer_wall, outer_tool_path;
+  bool outer_wall_trimmed = false, outer_tool_path_trimmed = false;
+  double outer_error = 0, outer_tool_path_error = 0;
 };
 
 /// Builds the pitch curve, profile and tool path. Requires validate(design) to have passed.
