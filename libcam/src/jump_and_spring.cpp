@@ -147,11 +147,50 @@ double least_contact_margin(const CamDesign& d, const FollowerTrain& train, doub
   return -supremum(d, minus_margin).value;
 }
 
+namespace {
+
+/// The margin's coefficients at kSamples angles, computed once for a sweep: the least margin at
+/// any speed is then the least sampled value, refined by golden-section search around it.
+class MarginTable {
+ public:
+  MarginTable(const CamDesign& d, const FollowerTrain& tr, double min_force) : d_(d), tr_(tr), min_force_(min_force) {
+    for (int i = 0; i < kSamples; ++i) {
+      const double theta = d.program.start() + 2 * std::numbers::pi * i / kSamples;
+      terms_.push_back(margin_terms(tr, detail::terms_at(d, theta), min_force));
+    }
+  }
+
+  double least(double w) const {
+    std::size_t best = 0;
+    double low = kInf;
+    for (std::size_t i = 0; i < terms_.size(); ++i) {
+      const Margin& m = terms_[i];
+      const double v = (m.A * w + m.B) * w + m.C;
+      if (v < low) low = v, best = i;
+    }
+    const double h = 2 * std::numbers::pi / kSamples, theta = d_.program.start() + h * best;
+    auto minus = [&](double t) {
+      const Margin m = margin_terms(tr_, detail::terms_at(d_, t), min_force_);
+      return -((m.A * w + m.B) * w + m.C);
+    };
+    return -detail::golden_maximum(minus, theta - h, theta + h, 1e-12, {theta, -low}).value;
+  }
+
+ private:
+  const CamDesign& d_;
+  const FollowerTrain& tr_;
+  double min_force_;
+  std::vector<Margin> terms_;
+};
+
+}  // namespace
+
 SpeedSweep sweep_speeds(const CamDesign& d, const FollowerTrain& train, double min_force,
                         const std::vector<double>& omegas) {
   SpeedSweep out;
   out.omega = omegas;
-  for (double w : omegas) out.margin.push_back(least_contact_margin(d, train, w, min_force));
+  const MarginTable table(d, train, min_force);
+  for (double w : omegas) out.margin.push_back(table.least(w));
   double lo = 0, hi = -1;
   for (std::size_t i = 0; i < omegas.size(); ++i) {
     if (out.margin[i] < 0) {
@@ -161,13 +200,13 @@ SpeedSweep sweep_speeds(const CamDesign& d, const FollowerTrain& train, double m
     lo = omegas[i];
   }
   if (hi < 0) return out;
-  if (least_contact_margin(d, train, 0, min_force) < 0) {
+  if (table.least(0) < 0) {
     out.jump = 0;
     return out;
   }
-  for (int k = 0; k < 100 && hi - lo > 1e-12 * hi; ++k) {
+  for (int k = 0; k < 100 && hi - lo > 1e-10 * hi; ++k) {
     const double mid = 0.5 * (lo + hi);
-    (least_contact_margin(d, train, mid, min_force) < 0 ? hi : lo) = mid;
+    (table.least(mid) < 0 ? hi : lo) = mid;
   }
   out.jump = 0.5 * (lo + hi);
   return out;

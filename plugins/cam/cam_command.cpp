@@ -1,14 +1,15 @@
 // `gearkit cam FILE.yaml`: a cam from its motion program (libcam): checks, profile by CGAL
-// offsets, and DXF/SVG/CSV/plot export for manufacturing.
+// offsets, follower dynamics, and DXF/SVG/CSV/plot/G-code export for manufacturing.
 #include "cam_command.hpp"
 
 #include "cam_export.hpp"
+#include "cam_gcode.hpp"
 #include "cam_model.hpp"
 #include "cam_report.hpp"
 
-#include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/output.hpp>
 #include <gearkit/io/quantity.hpp>
 
 #include <fmt/format.h>
@@ -23,35 +24,109 @@ namespace {
 
 constexpr std::string_view kUsage =
     "gearkit cam FILE.yaml [--dxf FILE] [--dxf-lines-arcs] [--svg FILE] [--follower-at ANGLE] [--plot FILE] "
-    "[--csv FILE] [--cutter-radius LEN] [--format text|json|csv|md]";
+    "[--csv FILE] [--cutter-radius LEN] [--dynamics-plot FILE] [--dyn FILE] [--gcode FILE] [--gcode-form xy|polar] "
+    "[--feed RATE] [--format text|json|csv|md]";
 
 struct Options {
-  std::string file, dxf, svg, plot, csv;
+  std::string file, dxf, svg, plot, csv, dynamics_plot, dyn, gcode;
   bool dxf_lines_arcs = false;
   std::optional<double> cutter_radius_mm;
   std::optional<double> follower_at;
+  GcodeOptions gcode_options;
 };
+
+std::optional<double> quantity_option(const io::po::variables_map& vm, const char* key, io::Quantity q, const char* unit) {
+  if (!vm.count(key)) return std::nullopt;
+  try {
+    return io::parse_quantity_si(vm[key].as<std::string>(), q, unit);
+  } catch (const io::QuantityError& e) {
+    io::fail_option(fmt::format("--{}", key), e.what());
+  }
+}
 
 Options read_options(const io::po::variables_map& vm) {
   Options o;
   o.file = vm["file"].as<std::string>();
-  for (auto [key, target] : {std::pair{"dxf", &o.dxf}, {"svg", &o.svg}, {"plot", &o.plot}, {"csv", &o.csv}})
+  for (auto [key, target] : {std::pair{"dxf", &o.dxf}, {"svg", &o.svg}, {"plot", &o.plot}, {"csv", &o.csv},
+                             {"dynamics-plot", &o.dynamics_plot}, {"dyn", &o.dyn}, {"gcode", &o.gcode}})
     if (vm.count(key)) *target = vm[key].as<std::string>();
   o.dxf_lines_arcs = vm.count("dxf-lines-arcs") > 0;
-  auto quantity = [&](const char* key, io::Quantity q, const char* unit) -> std::optional<double> {
-    if (!vm.count(key)) return std::nullopt;
-    try {
-      return io::parse_quantity_si(vm[key].as<std::string>(), q, unit);
-    } catch (const io::QuantityError& e) {
-      io::fail_option(fmt::format("--{}", key), e.what());
-    }
-  };
-  if (const auto rc = quantity("cutter-radius", io::Quantity::length, "mm")) {
-    if (!(*rc > 0)) io::fail_option("--cutter-radius", fmt::format("expected a radius > 0, found {} mm", *rc * 1000));
+  if (const auto rc = quantity_option(vm, "cutter-radius", io::Quantity::length, "mm")) {
+    if (!(*rc > 0 && *rc * 1000 <= kMaxLengthMm))
+      io::fail_option("--cutter-radius", fmt::format("expected a radius > 0 and up to {} mm, found {:.6g} mm", kMaxLengthMm, *rc * 1000));
     o.cutter_radius_mm = *rc * 1000;
   }
-  o.follower_at = quantity("follower-at", io::Quantity::angle, "deg");
+  o.follower_at = quantity_option(vm, "follower-at", io::Quantity::angle, "deg");
+  if (vm.count("gcode-form")) {
+    const std::string form = vm["gcode-form"].as<std::string>();
+    if (form != "xy" && form != "polar") io::fail_option("--gcode-form", fmt::format("expected xy or polar, found {}", io::quote(form)));
+    o.gcode_options.polar = form == "polar";
+  }
+  if (const auto feed = quantity_option(vm, "feed", io::Quantity::velocity, "mm/min")) {
+    if (!(*feed > 0 && *feed <= 1)) io::fail_option("--feed", fmt::format("expected a feed > 0 and up to 60000 mm/min, found {:.6g} mm/min", *feed * 60000));
+    o.gcode_options.feed_mm_min = *feed * 60000;
+  }
   return o;
+}
+
+/// Checks, profile(s), continuity and dynamics of the model.
+CamResult analyse(const CamModel& model, const std::string& file) {
+  CamResult result;
+  const gc::CheckOptions checks{std::max(3600, model.samples), model.pressure_angle_limit};
+  result.checks = gc::check_design(model.design, checks);
+  const gc::ProfileOptions profile{model.tolerance_mm, model.cutter_radius_mm};
+  try {
+    result.profile = gc::synthesize_profile(model.design, profile);
+    if (model.design.follower.closure == gc::Closure::conjugate)
+      result.second_profile = gc::synthesize_profile(gc::conjugate_cam_of(model.design), profile);
+  } catch (const gc::GeometryError& e) {
+    io::fail_at(io::SourceMark{file, 0, 0}, fmt::format("cannot build the cam profile: {}", e.what()));
+  }
+  if (model.design.follower.closure == gc::Closure::groove)
+    result.other_checks = gc::check_design(gc::outer_wall_of(model.design), checks);
+  if (model.design.follower.closure == gc::Closure::conjugate)
+    result.other_checks = gc::check_design(gc::conjugate_cam_of(model.design), checks);
+  // The largest distance of the exported arcs from the analytic profile, found during the fit;
+  // where the offset folds (undercut) the trimmed-away part has no analytic counterpart.
+  result.deviation_mm = result.profile.profile_error;
+  result.jumps = gc::continuity_check(model.design.program);
+  result.samples = sample_turn(model);
+  if (model.dynamics) result.dynamics = analyse_dynamics(model);
+  return result;
+}
+
+/// What a groove or the G-code needs of the cutter.
+void check_cutter(const CamModel& model, const Options& options) {
+  const char* where = options.cutter_radius_mm ? "--cutter-radius" : "the model's output.cutter_radius";
+  if (model.design.follower.closure == gc::Closure::groove && model.cutter_radius_mm &&
+      *model.cutter_radius_mm > model.design.follower.roller_radius)
+    io::fail_option(where, fmt::format("a groove cam is cut from inside its groove: expected a cutter radius up to the "
+                                       "roller radius {:.6g} mm, found {:.6g} mm",
+                                       model.design.follower.roller_radius, *model.cutter_radius_mm));
+  if (!options.gcode.empty() && !model.cutter_radius_mm)
+    io::fail_option("--gcode", "expected a cutter radius (--cutter-radius or output.cutter_radius): G-code is the cutter's path");
+  if ((!options.dynamics_plot.empty() || !options.dyn.empty()) && !model.dynamics)
+    io::fail_option(options.dyn.empty() ? "--dynamics-plot" : "--dyn", "expected a dynamics: section in the model");
+}
+
+void add_exports(const CamModel& model, const CamResult& result, const Options& options, io::OutputSet& outputs) {
+  const gc::CamProfile* second = result.second_profile ? &*result.second_profile : nullptr;
+  if (!options.dxf.empty()) {
+    io::DxfOptions dxf;
+    dxf.lines_and_arcs_only = options.dxf_lines_arcs;
+    outputs.add("--dxf", options.dxf, io::to_dxf(cam_drawing(model, result.profile, false, second), dxf));
+  }
+  if (!options.svg.empty()) {
+    io::SvgOptions svg;
+    svg.title = fmt::format("gearkit cam: {}", model.name.empty() ? options.file : model.name);
+    outputs.add("--svg", options.svg, io::to_svg(cam_drawing(model, result.profile, true, second), svg));
+  }
+  if (!options.plot.empty()) outputs.add("--plot", options.plot, io::to_svg(motion_plot(model, result.samples)));
+  const CamDynamics* dyn = result.dynamics ? &*result.dynamics : nullptr;
+  if (!options.csv.empty()) outputs.add("--csv", options.csv, motion_csv(model, result.samples, dyn));
+  if (!options.dynamics_plot.empty()) outputs.add("--dynamics-plot", options.dynamics_plot, io::to_svg(dynamics_plot(model, *dyn)));
+  if (!options.dyn.empty()) outputs.add("--dyn", options.dyn, dyn_model(model, *dyn, options.file));
+  if (!options.gcode.empty()) outputs.add("--gcode", options.gcode, cam_gcode(model, result, options.gcode_options, options.file));
 }
 
 }  // namespace
@@ -65,8 +140,13 @@ int run_cam_command(plugin::CommandContext& context) {
       ("svg", io::po::value<std::string>(), "write an SVG drawing of the cam and its follower")
       ("follower-at", io::po::value<std::string>(), "cam angle of the follower in the SVG drawing (default 0 deg)")
       ("plot", io::po::value<std::string>(), "write the s-v-a-j diagrams as SVG")
-      ("csv", io::po::value<std::string>(), "write profile points and motion diagrams as CSV")
-      ("cutter-radius", io::po::value<std::string>(), "cutter radius for the tool path (e.g. 8 mm)");
+      ("csv", io::po::value<std::string>(), "write profile points, motion diagrams (and forces) as CSV")
+      ("cutter-radius", io::po::value<std::string>(), "cutter radius for the tool path (e.g. 8 mm)")
+      ("dynamics-plot", io::po::value<std::string>(), "write contact force, camshaft torque and Hertz stress as SVG")
+      ("dyn", io::po::value<std::string>(), "write the camshaft as a `gearkit dyn` model (flywheel)")
+      ("gcode", io::po::value<std::string>(), "write the cutter-centre path as G-code (RS-274/NGC)")
+      ("gcode-form", io::po::value<std::string>(), "xy (2-axis mill, G2/G3 arcs; default) or polar (rotary table: X radius, C angle)")
+      ("feed", io::po::value<std::string>(), "G-code feed rate (default 200 mm/min)");
   io::add_common_options(desc);
   io::po::positional_options_description positional;
   positional.add("file", 1);
@@ -78,34 +158,11 @@ int run_cam_command(plugin::CommandContext& context) {
   CamModel model = load_cam_model(options.file);
   if (options.cutter_radius_mm) model.cutter_radius_mm = options.cutter_radius_mm;
   if (options.follower_at) model.follower_at = *options.follower_at;
-
-  CamResult result;
-  result.checks = gc::check_design(model.design, {std::max(3600, model.samples), model.pressure_angle_limit});
-  try {
-    result.profile = gc::synthesize_profile(model.design, {model.tolerance_mm, model.cutter_radius_mm});
-  } catch (const gc::GeometryError& e) {
-    io::fail_at(io::SourceMark{options.file, 0, 0}, fmt::format("cannot build the cam profile: {}", e.what()));
-  }
-  // The largest distance of the exported arcs from the analytic profile, found during the fit;
-  // where the offset folds (undercut) the trimmed-away part has no analytic counterpart.
-  result.deviation_mm = result.profile.profile_error;
-  result.jumps = gc::continuity_check(model.design.program);
-  result.samples = sample_turn(model);
+  check_cutter(model, options);
+  const CamResult result = analyse(model, options.file);
 
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
-  if (!options.dxf.empty()) {
-    io::DxfOptions dxf;
-    dxf.lines_and_arcs_only = options.dxf_lines_arcs;
-    outputs.add("--dxf", options.dxf, io::to_dxf(cam_drawing(model, result.profile, false), dxf));
-  }
-  if (!options.svg.empty()) {
-    io::SvgOptions svg;
-    svg.title = fmt::format("gearkit cam: {}", model.name.empty() ? options.file : model.name);
-    outputs.add("--svg", options.svg, io::to_svg(cam_drawing(model, result.profile, true), svg));
-  }
-  if (!options.plot.empty()) outputs.add("--plot", options.plot, io::to_svg(motion_plot(model, result.samples)));
-  if (!options.csv.empty()) outputs.add("--csv", options.csv, motion_csv(model, result.samples));
-
+  add_exports(model, result, options, outputs);
   return io::emit(cam_report(model, result, options.file), common, outputs);
 }
 

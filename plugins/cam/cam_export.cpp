@@ -57,6 +57,15 @@ void draw_follower(const CamModel& model, io::Drawing& d) {
     d.lines.push_back({layer, f.pivot_distance, 0, p.x, p.y});
     d.circles.push_back({layer, f.pivot_distance, 0, 2});
   }
+  if (f.closure == gc::Closure::conjugate) {  // the second roller, on the same slider or arm
+    const gc::CamDesign second = gc::conjugate_cam_of(design);
+    const gc::Vec2 q = gc::contact_at(second, model.follower_at).follower_point;
+    d.circles.push_back({layer, q.x, q.y, gc::roller_radius(second)});
+    if (f.motion == gc::FollowerMotion::translating)
+      d.lines.push_back({layer, q.x, q.y, p.x, p.y});
+    else
+      d.lines.push_back({layer, f.pivot_distance, 0, q.x, q.y});
+  }
 }
 
 }  // namespace
@@ -67,7 +76,8 @@ io::Polyline polyline_of(const std::vector<gc::Piece>& loop, const std::string& 
   return out;
 }
 
-io::Drawing cam_drawing(const CamModel& model, const gc::CamProfile& profile, bool with_follower) {
+io::Drawing cam_drawing(const CamModel& model, const gc::CamProfile& profile, bool with_follower,
+                        const gc::CamProfile* second) {
   io::Drawing d;
   d.layers = {{"profile", 7, "#000", false},
               {"pitch_curve", 5, "#2255cc", true},
@@ -76,10 +86,28 @@ io::Drawing cam_drawing(const CamModel& model, const gc::CamProfile& profile, bo
               {"follower", 1, "#cc2222", false},
               {"center", 8, "#888", false}};
   const double turn = with_follower ? gc::rotation_sign(model.design.rotation) * model.follower_at : 0;
-  for (const auto& loop : profile.profile) d.polylines.push_back(rotated(polyline_of(loop, "profile"), turn));
+  auto add = [&](const std::vector<std::vector<gc::Piece>>& loops, const char* layer) {
+    for (const auto& loop : loops) d.polylines.push_back(rotated(polyline_of(loop, layer), turn));
+  };
+  add(profile.profile, "profile");
   if (!profile.pitch_curve.empty() && model.design.follower.contact == gc::Contact::roller)
     d.polylines.push_back(rotated(polyline_of(profile.pitch_curve, "pitch_curve"), turn));
-  for (const auto& loop : profile.tool_path) d.polylines.push_back(rotated(polyline_of(loop, "tool_path"), turn));
+  add(profile.tool_path, "tool_path");
+  if (!profile.outer_wall.empty()) {  // groove: the second wall and the cutter along it
+    d.layers.push_back({"outer_wall", 7, "#000", false});
+    d.layers.push_back({"outer_tool_path", 3, "#118811", false});
+    add(profile.outer_wall, "outer_wall");
+    add(profile.outer_tool_path, "outer_tool_path");
+  }
+  if (second) {  // the conjugate cam, on the same shaft
+    d.layers.push_back({"conjugate_profile", 6, "#8a2be2", false});
+    d.layers.push_back({"conjugate_pitch_curve", 5, "#2255cc", true});
+    d.layers.push_back({"conjugate_tool_path", 3, "#118811", false});
+    add(second->profile, "conjugate_profile");
+    if (!second->pitch_curve.empty())
+      d.polylines.push_back(rotated(polyline_of(second->pitch_curve, "conjugate_pitch_curve"), turn));
+    add(second->tool_path, "conjugate_tool_path");
+  }
   d.circles.push_back({"base_circle", 0, 0, model.design.base_radius});
   const double mark = 0.1 * model.design.base_radius;
   d.lines.push_back({"center", -mark, 0, mark, 0});
@@ -129,12 +157,15 @@ io::Plot motion_plot(const CamModel& model, const std::vector<gc::ContactState>&
   return plot;
 }
 
-std::string motion_csv(const CamModel& model, const std::vector<gc::ContactState>& samples) {
+std::string motion_csv(const CamModel& model, const std::vector<gc::ContactState>& samples, const CamDynamics* dyn) {
   const bool osc = oscillating(model);
   std::string out = osc ? "theta_deg,psi_deg,dpsi_dtheta,d2psi_dtheta2,d3psi_dtheta3"
                         : "theta_deg,s_mm,ds_dtheta_mm,d2s_dtheta2_mm,d3s_dtheta3_mm";
   if (model.omega) out += osc ? ",omega_rad_s,alpha_rad_s2,jerk_rad_s3" : ",v_mm_s,a_mm_s2,j_mm_s3";
-  out += ",pressure_angle_deg,rho_pitch_mm,pitch_x_mm,pitch_y_mm,profile_x_mm,profile_y_mm\n";
+  out += ",pressure_angle_deg,rho_pitch_mm,pitch_x_mm,pitch_y_mm,profile_x_mm,profile_y_mm";
+  const gc::ContactMaterial* material = model.contact ? &model.contact->material : nullptr;
+  if (dyn) out += fmt::format(",contact_force_N,camshaft_torque_N_m,power_W{}", material ? ",hertz_stress_MPa" : "");
+  out += "\n";
   for (const gc::ContactState& c : samples) {
     out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g}", c.theta * deg_per_rad,
                        osc ? c.motion.s * deg_per_rad : c.motion.s, c.motion.ds, c.motion.d2s, c.motion.d3s);
@@ -143,9 +174,16 @@ std::string motion_csv(const CamModel& model, const std::vector<gc::ContactState
       out += fmt::format(",{:.9g},{:.9g},{:.9g}", m.v, m.a, m.j);
     }
     const double rho = c.curvature_pitch == 0 ? INFINITY : 1 / c.curvature_pitch;
-    out += fmt::format(",{:.6f},{},{:.9f},{:.9f},{:.9f},{:.9f}\n", c.pressure_angle * deg_per_rad,
+    out += fmt::format(",{:.6f},{},{:.9f},{:.9f},{:.9f},{:.9f}", c.pressure_angle * deg_per_rad,
                        std::isfinite(rho) ? fmt::format("{:.6f}", rho) : std::string("inf"), c.pitch.x, c.pitch.y,
                        c.contact.x, c.contact.y);
+    if (dyn) {
+      const gc::DynamicState s = gc::dynamic_state(model.design, dyn->train, dyn->omega, c.theta, material);
+      const double force = s.wall == 0 ? s.force / s.lever : s.contact_force * s.wall;
+      out += fmt::format(",{:.9g},{:.9g},{:.9g}", force, s.torque, s.power);
+      if (material) out += std::isnan(s.hertz_stress) ? std::string(",") : fmt::format(",{:.9g}", s.hertz_stress / 1e6);
+    }
+    out += "\n";
   }
   return out;
 }

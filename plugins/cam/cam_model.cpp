@@ -144,6 +144,7 @@ void read_follower(io::MapReader& root, CamModel& model) {
       io::fail_at(follower.mark("pivot_radius"), fmt::format("expected a pivot radius >= 0, found {:.6g} mm",
                                                              model.pivot_radius_mm));
   }
+  read_second_roller(follower, model);
   follower.finish();
 }
 
@@ -153,6 +154,16 @@ void read_cam(io::MapReader& root, CamModel& model) {
   check_length(cam, "base_radius", model.design.base_radius);
   model.design.rotation = cam.choice("rotation", {"ccw", "cw"}, std::string("ccw")) == "cw" ? gc::Rotation::cw
                                                                                               : gc::Rotation::ccw;
+  const std::string type = cam.choice("type", {"plate", "groove", "conjugate"}, std::string("plate"));
+  const gc::Closure closure = type == "groove"      ? gc::Closure::groove
+                              : type == "conjugate" ? gc::Closure::conjugate
+                                                    : gc::Closure::spring;
+  gc::Follower& f = model.design.follower;
+  if (closure == gc::Closure::conjugate && f.second.arm_length == 0 && f.second.distance == 0)
+    io::fail_at(cam.mark("type"), "a conjugate cam needs follower.second_roller (distance, or arm_length and arm_angle)");
+  if (closure != gc::Closure::conjugate && (f.second.arm_length != 0 || f.second.distance != 0))
+    io::fail_at(cam.mark("type"), "follower.second_roller is for cam type conjugate");
+  f.closure = closure;
   model.omega = cam.optional_quantity("speed", io::Quantity::angular_velocity, "rpm");
   if (model.omega && !(*model.omega > 0))
     io::fail_at(cam.mark("speed"), fmt::format("expected a cam speed > 0 rpm (the sense of rotation is cam.rotation), "
@@ -216,7 +227,7 @@ void validate_design(const io::YamlDocument& doc, const io::SourceMark& motion_m
         {"base_radius", {"cam", "base_radius"}},       {"roller_radius", {"follower", "roller_radius"}},
         {"offset", {"follower", "offset"}},            {"pivot_distance", {"follower", "pivot_distance"}},
         {"arm_length", {"follower", "arm_length"}},    {"face_offset", {"follower", "face_offset"}},
-};
+        {"second_roller", {"follower", "second_roller"}}, {"closure", {"cam", "type"}}};
     io::SourceMark mark = motion_mark;
     if (const auto it = where.find(e.field()); it != where.end()) {
       io::MapReader section(doc.root[it->second.first], doc.file, it->second.first);
@@ -260,6 +271,8 @@ CamModel load_cam_model(const std::string& path) {
   const bool oscillating = model.design.follower.motion == gc::FollowerMotion::oscillating;
   std::vector<gc::Segment> segments = read_motion_segments(root, oscillating, kMm, &segment_marks);
   read_output(root, model);
+  read_dynamics(root, model);
+  read_contact(root, model);
   root.finish();
   build_program(model, std::move(segments), segment_marks, motion_mark);
   validate_design(doc, motion_mark, model);

@@ -1,6 +1,7 @@
 #pragma once
 // Reading a cam model file (YAML, documented in docs/cam.md) into a libcam design.
 #include <gearkit/cam/cam_design.hpp>
+#include <gearkit/cam/follower_dynamics.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <optional>
@@ -12,6 +13,37 @@ namespace gearkit::plugins::cam {
 /// Largest length accepted in a cam model [mm] (docs/cli.md): 10 m keeps the 1e-6 mm fit
 /// tolerance far above the rounding of coordinates (1e-16 relative).
 inline constexpr double kMaxLengthMm = 10000;
+
+/// Limits of the work-setting inputs of the dynamics (docs/cli.md).
+inline constexpr int kMinDynamicsSamples = 36, kMaxDynamicsSamples = 36000;
+inline constexpr int kMaxSweepSteps = 1000;
+inline constexpr double kMaxSpeedRpm = 1e6;
+
+/// A speed sweep for the jump: the least contact force at `steps` + 1 speeds from..to [rad/s].
+struct SpeedSweepInput {
+  double from = 0, to = 0;
+  int steps = 0;
+};
+
+/// The `dynamics:` section (docs/cam.md), in SI (see gearkit/cam/follower_dynamics.hpp).
+struct DynamicsInput {
+  gearkit::cam::FollowerTrain train;     ///< spring rate and preload as given (0 if sized)
+  std::optional<double> spring_rate, preload;  ///< given; the missing ones are sized
+  std::optional<double> damping_ratio;   ///< else train.damping
+  double min_force = 0;                  ///< [N], sizing target and jump criterion
+  double design_speed = 0;               ///< [rad/s], sizing and the analysis
+  double jump_search_to = 0;             ///< [rad/s]
+  std::optional<SpeedSweepInput> sweep;
+  int samples = 3600;                    ///< cam angles per turn
+  double fluctuation = 0.02;             ///< coefficient of speed fluctuation for the --dyn handover
+  io::SourceMark mark;                   ///< of the section, for messages about it
+};
+
+/// The `contact:` section: Hertz stress.
+struct ContactInput {
+  gearkit::cam::ContactMaterial material;
+  std::optional<double> allowable;  ///< [Pa]
+};
 
 struct CamModel {
   explicit CamModel(gearkit::cam::CamDesign d) : design(std::move(d)) {}
@@ -25,7 +57,15 @@ struct CamModel {
   double follower_at = 0;             ///< cam angle of the follower in the SVG drawing [rad]
   std::optional<double> cutter_radius_mm;
   double pivot_radius_mm = 0;         ///< oscillating: pivot boss radius, for the clearance check
+  std::optional<DynamicsInput> dynamics;
+  std::optional<ContactInput> contact;
 };
+
+/// The model's sections beyond the geometry (cam_model_dynamics.cpp): the second roller of a
+/// conjugate cam, `dynamics:` and `contact:`. @throws io::InputError with file:line:column.
+void read_second_roller(io::MapReader& follower, CamModel& model);
+void read_dynamics(io::MapReader& root, CamModel& model);
+void read_contact(io::MapReader& root, CamModel& model);
 
 /// Reads the `motion:` list of a mapping (docs/cam.md): the one syntax for motion programs, in
 /// `gearkit cam` files and in `cam_follower` elements of mechanism files. Returns without `lift`

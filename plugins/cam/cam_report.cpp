@@ -282,6 +282,57 @@ void table_remarks(const CamModel& model, io::Report& rep) {
   }
 }
 
+/// Groove cams: the outer wall; conjugate cams: the second cam. The same checks as the first.
+void other_surface_section(const CamModel& model, const CamResult& r, io::Report& rep) {
+  if (!r.other_checks) return;
+  const bool groove = model.design.follower.closure == gc::Closure::groove;
+  const std::string name = groove ? "outer wall" : "conjugate cam";
+  const gc::CamChecks& c = *r.other_checks;
+  const auto radius = [](const gc::ValueAt& v) { return std::isfinite(v.value) ? io::fixed(v.value, 3) : "none"; };
+  const auto where = [](const gc::ValueAt& v) { return std::isfinite(v.value) ? io::fixed(angle_deg(v.theta), 2) : "-"; };
+  io::Table t{"Checks of the " + name, {"quantity", "value", "at cam angle [deg]"}, {}};
+  t.add_row({"max pressure angle [deg]", io::fixed(deg(c.pressure_angle_max.value), 3), where(c.pressure_angle_max)});
+  t.add_row({"min convex radius [mm]", radius(c.rho_profile_min), where(c.rho_profile_min)});
+  t.add_row({"min concave radius [mm]", radius(c.rho_concave_min), where(c.rho_concave_min)});
+  t.add_row({"undercut", c.undercut ? "yes" : "no", "-"});
+  t.add_row({"largest radius [mm]", io::fixed(c.radius_max.value, 3), where(c.radius_max)});
+  nlohmann::json j;
+  j["pressure_angle_max_deg"] = number(deg(c.pressure_angle_max.value));
+  j["rho_min_mm"] = number(c.rho_profile_min.value);
+  j["rho_concave_min_mm"] = number(c.rho_concave_min.value);
+  j["undercut"] = c.undercut;
+  j["radius_max_mm"] = number(c.radius_max.value);
+  if (!groove && r.second_profile) {
+    double least = INFINITY;
+    for (const gc::ContactState& s : c.samples) least = std::min(least, std::hypot(s.contact.x, s.contact.y));
+    t.add_row({"base radius (smallest radius) [mm]", io::fixed(least, 3), "-"});
+    t.add_row({"max deviation of the arcs [mm]", fmt::format("{:.3e}", r.second_profile->profile_error), "-"});
+    j["base_radius_mm"] = number(least);
+    j["profile_deviation_mm"] = number(r.second_profile->profile_error);
+  } else {
+    t.add_row({"max deviation of the arcs [mm]", fmt::format("{:.3e}", r.profile.outer_error), "-"});
+    j["profile_deviation_mm"] = number(r.profile.outer_error);
+  }
+  rep.tables.push_back(t);
+  rep.json[groove ? "outer_wall" : "conjugate_cam"] = j;
+  if (!groove && std::abs(c.pressure_angle_max.value) > model.pressure_angle_limit)
+    rep.warnings.push_back(fmt::format("pressure angle {} deg of the conjugate cam at cam angle {} deg exceeds the limit {} deg",
+                                       io::fixed(deg(c.pressure_angle_max.value), 2),
+                                       io::fixed(angle_deg(c.pressure_angle_max.theta), 2),
+                                       io::fixed(deg(model.pressure_angle_limit), 2)));
+  const gc::Follower& f = model.design.follower;
+  if (!groove && f.motion == gc::FollowerMotion::oscillating &&
+      c.radius_max.value >= f.pivot_distance - model.pivot_radius_mm)
+    rep.warnings.push_back(fmt::format("the conjugate cam reaches {} mm from its centre but the follower's pivot is at {} "
+                                       "mm: the cam would strike the pivot",
+                                       io::fixed(c.radius_max.value, 3), io::fixed(f.pivot_distance, 3)));
+  for (const gc::ValueAt& u : c.undercut_ranges)
+    rep.warnings.push_back(fmt::format("undercut of the {} from cam angle {} deg to {} deg: the roller ({} mm) does not "
+                                       "fit its hollow; the follower will not reproduce the motion there",
+                                       name, io::fixed(angle_deg(u.theta), 2), io::fixed(angle_deg(u.value), 2),
+                                       io::fixed(gc::roller_radius(groove ? model.design : gc::conjugate_cam_of(model.design)), 3)));
+}
+
 }  // namespace
 
 double pivot_clearance(const CamModel& model, const CamResult& r) {
@@ -297,6 +348,7 @@ io::Report cam_report(const CamModel& model, const CamResult& result, const std:
   j["file"] = file;
   j["follower"] = {{"type", osc ? "oscillating" : "translating"}, {"contact", contact_name(d.follower.contact)}};
   j["rotation"] = d.rotation == gc::Rotation::ccw ? "ccw" : "cw";
+  j["type"] = d.follower.closure == gc::Closure::groove ? "groove" : d.follower.closure == gc::Closure::conjugate ? "conjugate" : "plate";
   j["base_radius_mm"] = number(d.base_radius);
   program_section(model, rep);
   checks_section(model, result, rep);
@@ -304,9 +356,11 @@ io::Report cam_report(const CamModel& model, const CamResult& result, const std:
   peaks_section(model, result, rep);
   motion_section(model, result, rep);
   profile_section(model, result, rep);
+  other_surface_section(model, result, rep);
   geometry_warnings(model, result, rep);
   continuity_remarks(model, result, rep);
   table_remarks(model, rep);
+  if (result.dynamics) dynamics_report(model, *result.dynamics, rep);
   if (model.omega) {
     j["speed_rad_s"] = number(*model.omega);
     j["speed_rpm"] = number(*model.omega * 30 / std::numbers::pi);

@@ -124,6 +124,18 @@ double distance_to_piece(const Piece& piece, double x, double y);
 /// radius, never beyond 270 deg of sweep (bulges stay finite).
 std::vector<Piece> merge_pieces(const std::vector<Piece>& pieces, double rel_tol = 1e-9);
 
+/// A point in polar coordinates about the origin [length, rad].
+struct PolarPoint {
+  double r = 0, phi = 0;
+};
+
+/// The chain of pieces as points in polar coordinates, the angle unwrapped along the way, such
+/// that moving linearly in radius and angle from one point to the next (a rotary table turning
+/// while a radial axis moves) stays within `tolerance` of the pieces: each move's largest
+/// deviation is found by maximisation (sampled to bracket, then golden-section search) and the
+/// piece halved until it fits. The first point is the first piece's start.
+std::vector<PolarPoint> polar_moves(const std::vector<Piece>& chain, double tolerance);
+
 /// A polyline vertex in the DXF convention: the segment that starts here is an arc of included
 /// angle 4 atan(bulge) (positive counter-clockwise), or straight for bulge 0.
 struct BulgeVertex {

@@ -107,8 +107,10 @@ std::optional<JumpSpeed> jump_speed(const CamDesign& design, const FollowerTrain
 /// >= 0 keeps the contact force at or above F_min.
 double least_contact_margin(const CamDesign& design, const FollowerTrain& train, double omega, double min_force);
 
-/// Speed sweep: the least contact force margin at each speed, and the jump speed bracketed by
-/// the sweep and refined by bisection on least_contact_margin (a second method for jump_speed).
+/// Speed sweep: the least contact force margin at each speed (the margin's coefficients are
+/// tabulated at 3600 angles once; the least sampled value is refined by golden-section search
+/// around it), and the jump speed bracketed by the sweep and refined by bisection on that least
+/// margin: a second method for jump_speed, which it must agree with.
 struct SpeedSweep {
   std::vector<double> omega;   ///< [rad/s]
   std::vector<double> margin;  ///< least Q - F_min h [N | N m]

@@ -1,0 +1,94 @@
+// Dynamics exports of the cam command: the force, torque and stress plot, and the camshaft as a
+// `gearkit dyn` model for the flywheel question.
+#include "cam_export.hpp"
+
+#include "cam_text.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace gearkit::plugins::cam {
+
+namespace gc = gearkit::cam;
+
+namespace {
+
+/// A series over the turn from angles [rad] and values, closed at 360 deg with the first value;
+/// at most about 1440 points (a quarter of a degree), which keeps the SVG small.
+io::Series closed_series(const std::string& name, const std::vector<double>& theta, const std::vector<double>& y,
+                         const std::string& color = "") {
+  io::Series s{name, {}, {}, color};
+  const double start = theta.front();
+  const std::size_t step = std::max<std::size_t>(1, theta.size() / 1440);
+  for (std::size_t i = 0; i <= theta.size(); i = i < theta.size() && i + step > theta.size() ? theta.size() : i + step) {
+    const std::size_t k = i % theta.size();
+    s.x.push_back(deg(theta[k] - start) + deg(start) + (i == theta.size() ? 360.0 : 0.0));
+    s.y.push_back(y[k]);
+  }
+  return s;
+}
+
+io::Series constant(const std::string& name, double value, const std::vector<double>& theta, const std::string& color) {
+  return {name, {deg(theta.front()), deg(theta.front()) + 360}, {value, value}, color};
+}
+
+}  // namespace
+
+io::Plot dynamics_plot(const CamModel& model, const CamDynamics& dyn) {
+  io::Plot plot;
+  plot.title = fmt::format("Cam dynamics at {:.6g} rpm{}", dyn.omega * 30 / std::numbers::pi,
+                           model.name.empty() ? "" : ": " + model.name);
+  plot.x_label = "cam angle theta [deg]";
+  std::vector<double> theta, force, torque, stress;
+  for (const gc::DynamicState& s : dyn.states) {
+    theta.push_back(s.theta);
+    force.push_back(s.wall == 0 ? s.force / s.lever : s.contact_force * s.wall);
+    torque.push_back(s.torque);
+    stress.push_back(s.hertz_stress / 1e6);
+  }
+  io::PlotPanel f{"contact force [N]", {closed_series("rigid follower", theta, force, "#1f4e9c")}, {}};
+  if (dyn.flexible) {
+    std::vector<double> flex;
+    for (std::size_t i = 0; i < dyn.flexible->theta.size(); ++i)
+      flex.push_back(dyn.flexible->force[i] / gc::lever(model.design, gc::contact_at(model.design, dyn.flexible->theta[i])));
+    f.series.push_back(closed_series("flexible follower", dyn.flexible->theta, flex, "#d9822b"));
+  }
+  if (model.dynamics->min_force > 0) f.series.push_back(constant("least wanted", model.dynamics->min_force, theta, "#888"));
+  f.series.push_back(constant("zero", 0, theta, "#bbb"));
+  io::PlotPanel t{"camshaft torque [N*m]", {closed_series("camshaft torque", theta, torque, "#2a7f3f")}, {}};
+  plot.panels = {f, t};
+  if (model.contact) {
+    io::PlotPanel p{"Hertz contact stress [MPa]", {closed_series("p0", theta, stress, "#b22222")}, {}};
+    if (model.contact->allowable) p.series.push_back(constant("allowable", *model.contact->allowable / 1e6, theta, "#888"));
+    plot.panels.push_back(p);
+  }
+  return plot;
+}
+
+std::string dyn_model(const CamModel& model, const CamDynamics& dyn, const std::string& file) {
+  // The camshaft is the load shaft; its torque over the turn, kinetostatic at the design speed
+  // (follower inertia included), is the resisting torque; the motor gives the mean torque
+  // (scale: balance makes the cycle steady to the tolerance gearkit dyn asks).
+  const double rpm = dyn.omega * 30 / std::numbers::pi;
+  std::string out = fmt::format(
+      "# Written by gearkit cam from {}: the camshaft's torque over one turn at {:.9g} rpm\n"
+      "# (kinetostatic: follower inertia, spring, damping and friction), for `gearkit dyn` (docs/dyn.md).\n"
+      "title: \"camshaft of {}\"\n"
+      "motor:\n  speed: {:.9g} rpm\n"
+      "load:\n  name: camshaft\n  resisting:\n    table:\n",
+      file, rpm, model.name.empty() ? file : model.name, rpm);
+  const double start = dyn.states.front().theta;
+  for (std::size_t i = 0; i <= dyn.states.size(); ++i) {
+    const gc::DynamicState& s = dyn.states[i % dyn.states.size()];
+    const double angle = i == dyn.states.size() ? 360.0 : deg(s.theta - start);
+    out += fmt::format("      - [{:.9g} deg, {:.12g}]\n", angle, s.torque);
+  }
+  out += fmt::format("flywheel:\n  fluctuation: {:.9g}\n  drive: {{constant: 1 N*m, scale: balance}}\n",
+                     model.dynamics->fluctuation);
+  return out;
+}
+
+}  // namespace gearkit::plugins::cam
