@@ -23,9 +23,8 @@ namespace gc = gearkit::cam;
 namespace {
 
 constexpr std::string_view kUsage =
-    "gearkit cam FILE.yaml [--dxf FILE] [--dxf-lines-arcs] [--svg FILE] [--follower-at ANGLE] [--plot FILE] "
-    "[--csv FILE] [--cutter-radius LEN] [--dynamics-plot FILE] [--dyn FILE] [--gcode FILE] [--gcode-form xy|polar] "
-    "[--feed RATE] [--format text|json|csv|md]";
+    "gearkit cam FILE.yaml [--dxf FILE] [--svg FILE] [--plot FILE] [--csv FILE] [--dynamics-plot FILE] "
+    "[--gcode FILE] [options] (all options: gearkit cam --help)";
 
 struct Options {
   std::string file, dxf, svg, plot, csv, dynamics_plot, dyn, gcode;

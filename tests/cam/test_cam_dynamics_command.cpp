@@ -209,7 +209,7 @@ dynamics: {mass: 2 kg, damping: 5 N*s/m}
     const auto check = ezdxf_check(dxf);
     ASSERT_FALSE(check.contains("read_error")) << check.dump();
     EXPECT_TRUE(check["audit_errors"].empty());
-    for (const std::string layer : type == "groove" ? std::vector<std::string>{"profile", "outer_wall", "tool_path", "outer_tool_path"}
+    for (const std::string& layer : type == "groove" ? std::vector<std::string>{"profile", "outer_wall", "tool_path", "outer_tool_path"}
                                                     : std::vector<std::string>{"profile", "conjugate_profile", "conjugate_pitch_curve"})
       EXPECT_TRUE(check["entities"].contains(layer)) << layer;
   }
