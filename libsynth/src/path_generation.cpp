@@ -2,6 +2,8 @@
 
 #include <gearkit/synth/function_generation.hpp>
 
+#include <gearkit/kin/fourbar.hpp>
+
 #include <fmt/format.h>
 #include <nlopt.h>
 
@@ -126,9 +128,12 @@ double violations(const double* x, const Problem& p) {
   const double r[4] = {x[R1], x[R2], x[R3], x[R4]};
   const double s = *std::min_element(r, r + 4), l = *std::max_element(r, r + 4);
   double v = squared(l / s - c.max_link_ratio) * 0.01;
-  if (c.require_crank) {
+  if (c.require_crank()) {
     v += squared(s + l - (r[0] + r[1] + r[2] + r[3] - s - l) + 1e-3);
-    v += squared(std::min(x[R1], x[R2]) - std::min(x[R3], x[R4]));
+    // The shortest link: the crank or the ground (crank), or exactly one of them.
+    if (c.grashof == GrashofType::crank) v += squared(std::min(x[R1], x[R2]) - std::min(x[R3], x[R4]));
+    if (c.grashof == GrashofType::crank_rocker) v += squared(x[R2] - std::min({x[R1], x[R3], x[R4]}));
+    if (c.grashof == GrashofType::double_crank) v += squared(x[R1] - std::min({x[R2], x[R3], x[R4]}));
     for (double phi : {0.0, pi}) {
       const double mu = acute_transmission(x[R2], x[R3], x[R4], x[R1], phi);
       v += mu < 0 ? 1.0 : squared(c.min_transmission - mu);
@@ -159,7 +164,7 @@ double objective(unsigned, const double* x, double*, void* data) {
     }
     p.local[j] = pose->P;
     p.closed[j] = 1;
-    if (!p.constraints.require_crank)
+    if (!p.constraints.require_crank())
       e += penalty_weight * squared(p.constraints.min_transmission - transmission_angle(*pose, f));
   }
   const Placement pl = best_placement(p.local, p.targets, p.closed);
@@ -301,7 +306,7 @@ PathResult result_of(Problem& p, const std::vector<double>& x, const Vec2& centr
   r.error = tracking_error(f, r.theta2, targets, &r.reached);
   for (std::size_t j = 0; j < r.reached.size(); ++j) r.max_distance = std::max(r.max_distance, (r.reached[j] - targets[j]).norm());
   const std::vector<int> branches(r.theta2.size(), f.branch);
-  r.defects = check_defects(f, r.theta2, branches, p.constraints.require_crank);
+  r.defects = check_defects(f, r.theta2, branches, p.constraints.require_crank());
   r.transmission = crank_turns_fully(f) ? transmission_range(f, f.ground_angle(), 2 * pi, 1)
                                         : transmission_range(f, r.theta2[0], r.defects.travel, r.defects.direction);
   return r;
@@ -315,6 +320,10 @@ std::string infeasibility(const PathResult& r, const PathTask& t) {
   const double ratio = *std::max_element(links, links + 4) / *std::min_element(links, links + 4);
   if (!std::isfinite(r.error)) return "the linkage cannot be assembled at every target";
   if (!r.defects.ok()) return r.defects.notes.front();
+  const kin::GrashofClass g = kin::grashof(f.ground(), f.crank, f.coupler, f.rocker).kind;
+  if (c.grashof == GrashofType::crank_rocker && !(g == kin::GrashofClass::crank_rocker && f.crank <= std::min({f.ground(), f.coupler, f.rocker})))
+    return "not a crank-rocker (the crank is not the shortest link)";
+  if (c.grashof == GrashofType::double_crank && g != kin::GrashofClass::double_crank) return "not a double crank";
   if (r.transmission.min < c.min_transmission - 1e-6)
     return fmt::format("transmission angle {:.2f} deg below the {:.2f} deg minimum", r.transmission.min * 180 / pi,
                        c.min_transmission * 180 / pi);

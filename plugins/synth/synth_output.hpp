@@ -42,8 +42,8 @@ struct Checkpoint {
 
 /// Loads the mechanism text through the `gearkit kin` reader, drives the solver from the drawn
 /// position through each checkpoint in turn (continuation, so the branch is kept) and returns
-/// the largest deviation [m or rad]; adds a note (or a warning if it exceeds 1e-6 mm) to the
-/// report. Closing the loop between synthesis and analysis.
+/// the largest miss [m or rad]; adds the misses (JSON solver_check_max_miss_mm/_deg) and a note,
+/// or a warning above 1e-8 m or rad, to the report. Closing the loop between synthesis and analysis.
 double verify_with_solver(const std::string& yaml, const std::vector<Checkpoint>& checkpoints, io::Report& report);
 
 /// Crank angle t2 as reached from `start` turning in `direction` (the driver's continuous value).

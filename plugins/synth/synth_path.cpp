@@ -36,7 +36,11 @@ gs::PathConstraints read_constraints(io::MapReader& r) {
   gs::PathConstraints c;
   if (!r.has("constraints")) return c;
   io::MapReader m = r.map("constraints");
-  c.require_crank = m.boolean_or("crank", true);
+  const std::string type = m.choice("grashof", {"crank", "crank-rocker", "double-crank", "any"}, "crank");
+  c.grashof = type == "crank-rocker"   ? gs::GrashofType::crank_rocker
+              : type == "double-crank" ? gs::GrashofType::double_crank
+              : type == "any"          ? gs::GrashofType::any
+                                       : gs::GrashofType::crank;
   c.min_transmission = m.quantity_or("min_transmission", io::Quantity::angle, "deg", c.min_transmission);
   c.max_link_ratio = m.optional_number("max_link_ratio").value_or(c.max_link_ratio);
   if (const auto n = m.optional_node("link_length")) {

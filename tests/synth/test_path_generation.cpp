@@ -4,6 +4,7 @@
 #include "synth_test_support.hpp"
 
 #include <gearkit/synth/mechanism_writer.hpp>
+#include <gearkit/kin/fourbar.hpp>
 #include <gearkit/synth/path_generation.hpp>
 
 #include <gtest/gtest.h>
@@ -126,4 +127,18 @@ TEST(PathGeneration, BadTasksAreRejected) {
   EXPECT_THROW(synthesize_path(t), std::invalid_argument);
   EXPECT_EQ(default_path_evaluations(10), 300000);
   EXPECT_EQ(default_path_evaluations(100), 30000);
+}
+
+TEST(PathGeneration, GrashofTypeIsImposed) {
+  PathTask t;
+  t.points = ellipse_points();
+  t.budget.evaluations = 60000;
+  t.constraints.grashof = GrashofType::double_crank;
+  const PathResult r = synthesize_path(t);
+  EXPECT_EQ(gearkit::kin::grashof(r.linkage.ground(), r.linkage.crank, r.linkage.coupler, r.linkage.rocker).kind,
+            gearkit::kin::GrashofClass::double_crank);
+  t.constraints.grashof = GrashofType::crank_rocker;
+  const PathResult c = synthesize_path(t);
+  EXPECT_LE(c.linkage.crank, std::min({c.linkage.ground(), c.linkage.coupler, c.linkage.rocker}));
+  EXPECT_TRUE(crank_turns_fully(c.linkage));
 }

@@ -61,7 +61,7 @@ TEST(SynthCommand, ThreePositionMechanismIsAnalysedByKinAtEveryPosition) {
   const fs::path out = scratch() / "three.yaml";
   const auto j = synth_json("motion " + example("three_positions.yaml") + " --mechanism " + shell_quote(out.string()));
   EXPECT_EQ(j["defects"].size(), 0u);
-  EXPECT_LT(j["solver_check_max_deviation"].get<double>(), 1e-8);
+  EXPECT_LT(j["solver_check_max_miss_mm"].get<double>(), 1e-5);
   // The task's poses: C at (0, 0), (50, 60), (110, 80) mm; the driver sweeps from pose 1.
   const double t1 = j["positions"][0]["theta2_deg"], t2 = j["positions"][1]["theta2_deg"], t3 = j["positions"][2]["theta2_deg"];
   const double dir = std::remainder(t2 - t1, 360.0) > 0 ? 1 : -1;
@@ -80,8 +80,9 @@ TEST(SynthCommand, EveryExampleRunsAndChecksItselfWithTheSolver) {
     const std::string s(task);
     const auto space = s.find(' ');
     const auto j = synth_json(s.substr(0, space) + " " + example(s.substr(space + 1)));
-    ASSERT_TRUE(j.contains("solver_check_max_deviation")) << task;
-    EXPECT_LT(j["solver_check_max_deviation"].get<double>(), 1e-8) << task;
+    ASSERT_TRUE(j.contains("solver_check_max_miss_mm")) << task;
+    EXPECT_LT(j["solver_check_max_miss_mm"].get<double>(), 1e-5) << task;
+    EXPECT_LT(j["solver_check_max_miss_deg"].get<double>(), 1e-6) << task;
   }
 }
 

@@ -30,8 +30,17 @@ struct Region {
   bool contains(const Vec2& p) const;
 };
 
+/// The Grashof type asked of the linkage.
+enum class GrashofType {
+  crank,         ///< the crank turns fully: crank-rocker or double crank (Grashof, crank or ground shortest)
+  crank_rocker,  ///< Grashof with the crank the shortest link
+  double_crank,  ///< Grashof with the ground the shortest link (drag link)
+  any,           ///< no Grashof condition: the input may rock between toggles
+};
+
 struct PathConstraints {
-  bool require_crank = true;             ///< Grashof, crank the shortest link: a motor turns it fully
+  GrashofType grashof = GrashofType::crank;
+  bool require_crank() const { return grashof != GrashofType::any; }
   double min_transmission = 0.5235987755982988;  ///< [rad] (30 deg), over the motion
   double max_link_ratio = 10;            ///< longest / shortest link
   std::optional<double> min_link, max_link;  ///< link-length bounds [m]; default from the targets' span
