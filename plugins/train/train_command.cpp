@@ -1,6 +1,7 @@
 // `gearkit train FILE ...`: speeds, ratios, modes, torques and assembly checks of a gear train;
 // `gearkit train synth ...`: tooth counts for a target ratio (train_synth_command.cpp).
 #include "train_command.hpp"
+#include "train_willis.hpp"
 
 #include "train_centre_distance.hpp"
 #include "train_conditions.hpp"
@@ -404,6 +405,8 @@ int run_train_command(plugin::CommandContext& context) {
       ("mesh-efficiency", po::value<double>()->value_name("ETA"),
        "basic efficiency eta_0 of the meshes without their own 'efficiency' (default 1)")
       ("modes", "ratio w_out/w_in with each other member held fixed in turn, and with pairs coupled")
+      ("willis", po::value<std::string>()->value_name("M1,M2,..."),
+       "Willis' equation of each stage in the velocity vector u = {w_M1, w_M2, ...}, planets eliminated")
       ("centre-tolerance", po::value<std::string>()->value_name("LENGTH"),
        "coaxiality: largest accepted difference of planet centre distances (default 0.001 mm)");
   io::add_common_options(desc);
@@ -438,6 +441,7 @@ int run_train_command(plugin::CommandContext& context) {
   report.json["train"] = model.name();
   add_equations(report, model);
   add_structure(report, model, gt::analyse_structure(model));
+  if (vm.count("willis")) add_willis_in_vector(report, model, vm["willis"].as<std::string>());
 
   gt::SpeedSolution solution;
   try {

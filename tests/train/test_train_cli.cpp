@@ -88,6 +88,29 @@ TEST(TrainCli, SeedCvtTrainTextShowsFractionAndDecimal) {
   EXPECT_NE(run.out.find("w_23 / w_1 = -35/90"), std::string::npos) << run.out;
 }
 
+// Seed 004, exam C exercise 1 a): the Willis equations in u = {w1, wb, w45, w7}, planets
+// eliminated, as the exam writes them ([1] and [2] of its solution).
+TEST(TrainCli, SeedWillisInTheUsersVector) {
+  const CliRun run = gearkit("train " + example("seed_two_epicyclic_stages.yaml") + " --willis w_1,w_b,w_45,w_7 --format json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = json_of(run);
+  ASSERT_EQ(j["willis_in_vector"].size(), 2u);
+  EXPECT_EQ(j["willis_in_vector"][0]["tau"], "-2/5");
+  EXPECT_EQ(j["willis_in_vector"][0]["equation"], "-2/5 w_1 + 7/5 w_b - w_45 = 0");
+  EXPECT_EQ(j["willis_in_vector"][1]["tau"], "-7/2");
+  EXPECT_EQ(j["willis_in_vector"][1]["equation"], "-7/2 w_45 + 9/2 w_b - w_7 = 0");
+  EXPECT_TRUE(j["warnings"].empty());
+  // Exam A exercise 2 b): the relation among w3 (member 23), w5 and wb only.
+  const CliRun cvt = gearkit("train " + example("seed_cvt_train.yaml") + " --willis 23,5,b --format json");
+  ASSERT_EQ(cvt.status, 0) << cvt.err;
+  const auto k = json_of(cvt);
+  ASSERT_EQ(k["willis_in_vector"].size(), 1u);
+  EXPECT_EQ(k["willis_in_vector"][0]["equation"], "-1/3 w_23 + 4/3 w_b - w_5 = 0");
+  const CliRun bad = gearkit("train " + example("seed_cvt_train.yaml") + " --willis 23,4");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("planet '4'"), std::string::npos) << bad.err;
+}
+
 // Seed 004 second exam: modes 7/5, 9/7 and 1.
 TEST(TrainCli, SeedModes) {
   const CliRun run = gearkit("train " + example("seed_two_epicyclic_stages.yaml") +
