@@ -4,6 +4,8 @@
 // file; `gearkit gear size`.
 #include "gear_command.hpp"
 
+#include "gear_drawing.hpp"
+
 #include "gear_options.hpp"
 #include "gear_pair_file.hpp"
 #include "gear_rating_options.hpp"
@@ -41,7 +43,7 @@ constexpr std::string_view kUsage =
     "[--centre-distance-tolerance jsN | --centre-distance-allowances UP,LOW] [--temperature T[,T_HOUSING] "
     "[--expansion A1,A2,AH]] [--torque1 T | --power P --speed1 N --material1 M --material2 M "
     "[--method iso6336|agma|lewis-hertz] [--factor NAME=VALUE]...] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] "
-    "[--draw pair|gear1|gear2]\n       gearkit gear size --help";
+    "[--draw pair|gear1|gear2] [--tolerance LEN] [--cutter-teeth N] [--cutter-tip-radius LEN]\n       gearkit gear size --help";
 
 // gearkit 0.1 spelled two options the American way; the old names stay accepted for one release
 // (docs/gear.md) and are read as the new ones.
@@ -80,7 +82,7 @@ struct Request {
 Request read_request(const io::po::variables_map& vm) {
   Request q;
   if (vm.count("file")) {
-    static const std::set<std::string> output = {"file", "format", "output", "strict", "svg", "dxf", "draw", "help"};
+    static const std::set<std::string> output = {"file", "format", "output", "strict", "svg", "dxf", "draw", "tolerance", "cutter-teeth", "cutter-tip-radius", "help"};
     for (const auto& [name, value] : vm) {
       if (!value.defaulted() && !output.count(name)) {
         io::fail_option(fmt::format("--{}", name), "cannot be combined with a gear-pair file (the file holds the pair and its load)");
@@ -117,10 +119,11 @@ void check_drawn_teeth(const GearCommandOptions& options) {
                                 io::limits::kDrawnTeeth, drawn, options.draw));
 }
 
-void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, const gg::GearPairResult& result) {
+void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, const gg::GearPairResult& result,
+                  const gg::InspectionResult* inspection) {
   if (options.svg.empty() && options.dxf.empty()) return;
   check_drawn_teeth(options);
-  const io::Drawing drawing = gear_drawing(options.input, result, options.draw);
+  const io::Drawing drawing = gear_drawing(options.input, result, options, inspection);
   if (!options.svg.empty()) {
     io::SvgOptions svg;
     svg.title = fmt::format("gearkit gear: z1 = {}, z2 = {}", options.input.z1, options.input.z2);
@@ -157,6 +160,9 @@ int run_gear_command(plugin::CommandContext& context) {
 
   io::Report report = gear_report(q.options.input, result);
   if (inspection) add_inspection_report(report, *inspection);
+  if (!q.options.svg.empty() || !q.options.dxf.empty() || vm.count("cutter-teeth") || vm.count("cutter-tip-radius")) {
+    add_ring_cutting_report(report, q.options.input, result, q.options);
+  }
   if (q.rating) {
     try {
       add_rating_report(report, *q.rating, gg::rate_gear_pair(q.options.input, result, *q.rating));
@@ -165,7 +171,7 @@ int run_gear_command(plugin::CommandContext& context) {
     }
   }
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
-  add_drawings(outputs, q.options, result);
+  add_drawings(outputs, q.options, result, inspection ? &*inspection : nullptr);
   return io::emit(report, common, outputs);
 }
 

@@ -93,7 +93,10 @@ void add_gear_options(io::po::options_description& desc) {
       ("pin-diameter2", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 2, mm")
       ("svg", po::value<std::string>()->value_name("FILE"), "write the drawing as SVG")
       ("dxf", po::value<std::string>()->value_name("FILE"), "write the drawing as DXF (R2000, mm)")
-      ("draw", po::value<std::string>()->value_name("pair|gear1|gear2"), "what --svg/--dxf draw (default pair)");
+      ("draw", po::value<std::string>()->value_name("pair|gear1|gear2"), "what --svg/--dxf draw (default pair)")
+      ("tolerance", po::value<std::string>()->value_name("LEN"), "largest distance of the drawn tooth outline from the generated form (default 1um; 0.1um..1mm)")
+      ("cutter-teeth", po::value<std::string>()->value_name("N"), "teeth of the shaper cutter that cuts the ring (default: about 100 mm diameter)")
+      ("cutter-tip-radius", po::value<std::string>()->value_name("LEN"), "tip rounding radius of the ring's shaper cutter (default rho_fP* m_n, or 3/4 of the largest that fits)");
 }
 
 namespace {
@@ -201,6 +204,17 @@ void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
       fail("draw", fmt::format("expected pair, gear1 or gear2, found {}", io::quote(o.draw)));
     }
     if (o.svg.empty() && o.dxf.empty()) fail("draw", "needs --svg or --dxf");
+  }
+  if (given(vm, "tolerance")) {
+    o.tolerance = length_mm(vm, "tolerance");
+    if (!(o.tolerance >= 1e-4 * (1.0 - 1e-9) && o.tolerance <= 1.0)) {
+      fail("tolerance", fmt::format("expected a length from 0.1 um to 1 mm, found {} mm", o.tolerance));
+    }
+  }
+  if (given(vm, "cutter-teeth")) o.cutter.z_0 = teeth(vm, "cutter-teeth");
+  if (given(vm, "cutter-tip-radius")) {
+    o.cutter.rho_a0 = length_mm(vm, "cutter-tip-radius");
+    if (!(o.cutter.rho_a0 >= 0.0)) fail("cutter-tip-radius", fmt::format("expected a radius >= 0 mm, found {} mm", o.cutter.rho_a0));
   }
 }
 

@@ -1,7 +1,5 @@
 #include "gear_report.hpp"
 
-#include <gearkit/gear/tooth_form.hpp>
-
 #include <fmt/format.h>
 
 #include <cmath>
@@ -130,7 +128,7 @@ nlohmann::json gear_json(const gg::GearResult& g) {
           {"s_a_mm", jnum(g.s_an)},
           {"z_n", g.z_n},
           {"W_k_mm", jnum(g.W_k)},
-          {"k_span", g.k_span},
+          {"k_span", g.k_span > 0 ? nlohmann::json(g.k_span) : nlohmann::json(nullptr)},
           {"pin_diameter_mm", g.pin_diameter},
           {"M_d_mm", jnum(g.M_d)},
           {"chordal_thickness_mm", g.chordal_s},
@@ -168,15 +166,6 @@ nlohmann::json pair_json(const gg::PairResult& p, bool internal) {
   return j;
 }
 
-io::Polyline to_polyline(const std::vector<gg::ProfileVertex>& outline, std::string layer) {
-  io::Polyline pl;
-  pl.layer = std::move(layer);
-  pl.closed = true;
-  pl.vertices.reserve(outline.size());
-  for (const auto& v : outline) pl.vertices.push_back({v.x, v.y, v.bulge});
-  return pl;
-}
-
 }  // namespace
 
 io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r) {
@@ -202,38 +191,6 @@ io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r)
   report.json["pair"] = pair_json(r.pair, in.internal);
   report.json["gears"] = {gear_json(r.gear[0]), gear_json(r.gear[1])};
   return report;
-}
-
-io::Drawing gear_drawing(const gg::GearPairInput& in, const gg::GearPairResult& r, const std::string& what) {
-  io::Drawing d;
-  d.layers = {{"gear1", 5, "#1f4e9a", false},
-              {"gear2", 1, "#b02020", false},
-              {"pitch", 8, "#808080", true},
-              {"centres", 8, "#808080", false}};
-  auto centre_mark = [&d](double cx, double cy, double size) {
-    d.lines.push_back({"centres", cx - size, cy, cx + size, cy});
-    d.lines.push_back({"centres", cx, cy - size, cx, cy + size});
-  };
-  if (what == "pair") {
-    auto outlines = gg::pair_outlines(in, r);
-    d.polylines.push_back(to_polyline(outlines[0], "gear1"));
-    d.polylines.push_back(to_polyline(outlines[1], "gear2"));
-    const gg::Point2 c2 = gg::second_gear_centre(in, r);
-    d.circles.push_back({"pitch", 0.0, 0.0, 0.5 * r.gear[0].d_w});
-    d.circles.push_back({"pitch", c2.x, c2.y, 0.5 * r.gear[1].d_w});
-    if (in.internal) d.circles.push_back({"gear2", c2.x, c2.y, 0.5 * r.gear[1].d_f + 2.0 * r.gear[1].m_n});
-    centre_mark(0.0, 0.0, r.gear[0].m_n);
-    centre_mark(c2.x, c2.y, r.gear[1].m_n);
-  } else {
-    const int i = what == "gear1" ? 0 : 1;
-    const auto spec = gg::tooth_form_spec(in, r, i);
-    const std::string layer = i == 0 ? "gear1" : "gear2";
-    d.polylines.push_back(to_polyline(gg::gear_outline(spec), layer));
-    d.circles.push_back({"pitch", 0.0, 0.0, 0.5 * r.gear[i].d});
-    if (r.gear[i].internal) d.circles.push_back({layer, 0.0, 0.0, 0.5 * r.gear[i].d_f + 2.0 * r.gear[i].m_n});
-    centre_mark(0.0, 0.0, r.gear[i].m_n);
-  }
-  return d;
 }
 
 }  // namespace gearkit::plugins::gear

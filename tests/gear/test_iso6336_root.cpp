@@ -77,7 +77,7 @@ TEST(ToothRoot, ThirtyDegreeTangentMatchesTheGeneratedFillet) {
     pair.x1 = x;
     const auto result = gg::compute_gear_pair(pair);
     gg::ToothFormSpec spec = gg::tooth_form_spec(pair, result, 0);
-    spec.fillet_points = 20000;
+    spec.tolerance = 1e-7;
     const Numeric n = thirty_degree_point(gg::space_flank(spec), z);
     iso::ToothRootInput in = spur(z, x, result.pair.eps_alpha);
     in.d_a = result.gear[0].d_a;

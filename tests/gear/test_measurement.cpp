@@ -114,7 +114,7 @@ TEST(Pins, PinTouchesTheGeneratedFlank) {
     spec.m_n = m;
     spec.x = x;
     spec.d_a = z * m + 2.0 * m * (1.0 + x);
-    spec.flank_points = 4000;
+    spec.tolerance = 1e-5;
     const auto flank = gg::space_flank(spec);
     double dmin = std::numeric_limits<double>::infinity();
     for (const auto& p : flank) dmin = std::min(dmin, std::hypot(p.x, p.y - 0.5 * d_M));

@@ -4,6 +4,8 @@
 #include <gearkit/gear/involute.hpp>
 #include <gearkit/gear/tooth_form.hpp>
 
+#include "rack_generation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -109,7 +111,7 @@ TEST(ToothForm, FilletEndsOnTheInvoluteAtTheFormCircle) {
   const int z = 24;
   const double m = 3.0, x = 0.36;
   auto spec = spur(z, m, x);
-  spec.fillet_points = 400;
+  spec.tolerance = 1e-5;
   const auto f = gg::space_flank(spec);
   const double rho_Ff = gg::form_roll_length(z, m, 0.0, x, gg::Rack{});
   const double r_Ff = std::hypot(0.5 * z * m * std::cos(kAlpha), rho_Ff);
@@ -205,4 +207,146 @@ TEST(ToothForm, Placement) {
   EXPECT_NEAR(p[0].x, 10.0, 1e-15);
   EXPECT_NEAR(p[0].y, 1.0, 1e-15);
   EXPECT_EQ(p[0].bulge, 0.5);
+}
+
+namespace {
+
+// Largest distance (mm) between the drawn flank of space 0 (vertices and chord midpoints) and
+// the space boundary that the independent cutting simulation gives at the same radius, measured
+// normal to the flank: a circumferential offset s where the chord makes the angle psi with the
+// circle is s sin(psi) from the boundary (first order; the offsets are micrometres).
+double deviation_from_simulation(const std::vector<gg::Point2>& flank, const rack_generation::Tool& tool, double r_f) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i + 1 < flank.size(); ++i) {
+    const double cx = flank[i + 1].x - flank[i].x, cy = flank[i + 1].y - flank[i].y;
+    for (double t : {0.0, 0.5}) {
+      const double x = flank[i].x + t * cx, y = flank[i].y + t * cy;
+      const double R = std::hypot(x, y);
+      if (R <= r_f + 1e-7) continue;  // the root circle itself: an exact arc
+      const double radial = std::fabs(cx * x + cy * y) / (R * std::hypot(cx, cy));  // sin(psi)
+      const double eta = rack_generation::space_eta(tool, R);
+      worst = std::max(worst, R * std::fabs(std::atan2(x, y) - eta) * radial);
+    }
+  }
+  return worst;
+}
+
+struct GenerationCase {
+  int z;
+  double m, x, beta_deg;
+};
+
+void expect_within_tolerance_of_simulation(const GenerationCase& g, double tolerance) {
+  gg::ToothFormSpec spec = spur(g.z, g.m, g.x);
+  spec.beta = g.beta_deg * kDeg;
+  spec.tolerance = tolerance;
+  const double m_t = g.m / std::cos(spec.beta), r = 0.5 * g.z * m_t;
+  spec.d_a = 2.0 * r + 2.0 * g.m * (1.0 + g.x);
+  const gg::Rack rk;
+  const auto tool = rack_generation::rack(r, g.m, spec.beta, g.x, rk.alpha_P, rk.h_fP, rk.rho_fP, 5.0 * m_t);
+  const auto flank = gg::space_flank(spec);
+  const double r_f = r + (g.x - rk.h_fP) * g.m;
+  EXPECT_NEAR(std::hypot(flank.front().x, flank.front().y), r_f, 1e-9);
+  const double dev = deviation_from_simulation(flank, tool, r_f);
+  EXPECT_LE(dev, tolerance) << "z " << g.z << " m " << g.m << " x " << g.x << " beta " << g.beta_deg;
+  EXPECT_GT(flank.size(), 8u);
+}
+
+}  // namespace
+
+TEST(ToothForm, OutlineWithinOneMicrometreOfTheRackCutSpur) {
+  // The issue 17 cases: z17 x-0.3 (undercut: the trochoid crosses the involute at r ~ 15.9955 mm
+  // for m = 2, found by the simulation) at m = 2 and m = 10, and shifted/unshifted spur gears.
+  for (const GenerationCase& g : {GenerationCase{17, 2.0, -0.3, 0.0}, GenerationCase{17, 10.0, -0.3, 0.0},
+                                  GenerationCase{30, 2.0, 0.0, 0.0}, GenerationCase{12, 5.0, 0.5, 0.0}}) {
+    expect_within_tolerance_of_simulation(g, 1e-3);
+  }
+}
+
+TEST(ToothForm, HelicalFilletFromTheNormalSectionTool) {
+  // Helical gears: the transverse section of the rack's rounding is an ellipse; at beta 10, 20 and
+  // 30 deg a circular section made the fillet 2.6, 10.4 and 24 um too thin.
+  for (double beta : {10.0, 20.0, 30.0}) expect_within_tolerance_of_simulation({19, 3.0, 0.0, beta}, 1e-3);
+  expect_within_tolerance_of_simulation({11, 4.0, -0.1, 25.0}, 1e-3);  // undercut helical
+}
+
+TEST(ToothForm, TighterToleranceIsHonoured) {
+  expect_within_tolerance_of_simulation({24, 8.0, 0.2, 15.0}, 1e-4);
+}
+
+TEST(ToothForm, UndercutCornerIsTheExactCrossing) {
+  // z17 x-0.3 m2: the simulation's space boundary has its corner at r = 15.9955 mm (issue 17);
+  // the drawn flank has a vertex there, on the involute and on the fillet at once.
+  gg::ToothFormSpec spec = spur(17, 2.0, -0.3);
+  const auto f = gg::space_flank(spec);
+  double best = 1.0;
+  for (const auto& p : f) best = std::min(best, std::fabs(std::hypot(p.x, p.y) - 15.9955));
+  EXPECT_LT(best, 1e-4);
+}
+
+namespace {
+
+gg::ToothFormSpec ring(int z, double m, double x, int z_0) {
+  gg::ToothFormSpec s;
+  s.z = -z;
+  s.m_n = m;
+  s.x = x;
+  s.d_a = -(z * m - 2.0 * m * (1.0 - x));  // ring tip: d_a = d - 2 h_a (ISO 21771, x2 > 0 thickens the teeth)
+  s.cutter.z_0 = z_0;
+  return s;
+}
+
+// The drawn flank of ring space 0 against the shaper-cutting simulation. For a ring the space
+// narrows outwards; the simulation's boundary is still the largest angle cut at each radius.
+double ring_deviation(const gg::ToothFormSpec& spec) {
+  const gg::RingCutting cut = gg::ring_cutting(spec);
+  const double m_t = spec.m_n, r = 0.5 * -spec.z * m_t;
+  const double s_t0 = gg::reference_tooth_thickness(m_t, cut.x_0, kAlpha);
+  const auto tool = rack_generation::shaper(-spec.z, cut.z_0, m_t, kAlpha, s_t0, 0.5 * cut.d_a0, cut.rho_a0, cut.a_0);
+  const auto flank = gg::space_flank(spec);
+  const double r_f = r + (1.25 - spec.x) * spec.m_n;
+  // The cutter's tip reaches the ring's root circle, and the fillet starts on it.
+  EXPECT_NEAR(0.5 * cut.d_a0 + cut.a_0, r_f, 1e-9);
+  EXPECT_NEAR(std::hypot(flank.front().x, flank.front().y), r_f, 1e-7);
+  double worst = 0.0;
+  for (std::size_t i = 0; i + 1 < flank.size(); ++i) {
+    const double cx = flank[i + 1].x - flank[i].x, cy = flank[i + 1].y - flank[i].y;
+    for (double t : {0.0, 0.5}) {
+      const double x = flank[i].x + t * cx, y = flank[i].y + t * cy, R = std::hypot(x, y);
+      if (R >= r_f - 1e-7) continue;
+      const double radial = std::fabs(cx * x + cy * y) / (R * std::hypot(cx, cy));
+      worst = std::max(worst, R * std::fabs(std::atan2(x, y) - rack_generation::space_eta(tool, R)) * radial);
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(ToothForm, RingFilletCutByTheShaperWithinTolerance) {
+  // Rings z = 60 (m = 2, cutter z_0 = 25) and z = 47 (m = 3, x = 0.2, z_0 = 18): the drawn flank
+  // stays within 1 um of the simulated shaper cut, fillet included (a sharp corner at the root
+  // missed it by 189 um, issue 17).
+  for (const auto& spec : {ring(60, 2.0, 0.0, 25), ring(47, 3.0, 0.2, 18)}) {
+    const double dev = ring_deviation(spec);
+    EXPECT_LE(dev, 1e-3) << spec.z;
+  }
+}
+
+TEST(ToothForm, RingCutterInterference) {
+  // A cutter of 25 teeth in a ring of 60 cuts cleanly. A cutter of nearly the ring's size
+  // (z_0 = 52 in z = 60) sweeps its tips through the ring's teeth (trochoid interference: the
+  // tooth-count difference must exceed about 10 to 15 for a 20 deg cutter).
+  const gg::RingCutting good = gg::ring_cutting(ring(60, 2.0, 0.0, 25));
+  EXPECT_EQ(good.tip_interference, 0.0);
+  EXPECT_EQ(good.involute_interference, 0.0);
+  const gg::RingCutting bad = gg::ring_cutting(ring(60, 2.0, 0.0, 55));
+  EXPECT_GT(bad.tip_interference, 0.01);
+  // The generating mesh: cos(alpha_w0) a_0 = (r_2 - r_0) cos(alpha) (base circles).
+  EXPECT_NEAR(good.a_0 * std::cos(good.alpha_w0), 0.5 * (60 - 25) * 2.0 * std::cos(kAlpha), 1e-9);
+  EXPECT_NEAR(good.alpha_w0, kAlpha, 1e-9);  // x = x_0 = 0: the cutter meshes on its reference circle
+  EXPECT_THROW(gg::ring_cutting(ring(60, 2.0, 0.0, 60)), std::invalid_argument);
+  EXPECT_EQ(gg::default_cutter_teeth(-100, 1.0), 90);
+  EXPECT_EQ(gg::default_cutter_teeth(-200, 1.0), 100);
+  EXPECT_EQ(gg::default_cutter_teeth(-60, 5.0), 20);
 }
