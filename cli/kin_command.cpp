@@ -507,7 +507,7 @@ int run_kin_command(plugin::CommandContext& context) {
   }
   const KinAnalysis analysis = analyse(mech, data, driver, at, sweeping ? &range : nullptr);
   io::Report report = build_report(mech, analysis);
-  if (vm["equations"].as<bool>()) add_equations_section(report, mech, analysis, common.format);
+  if (vm["equations"].as<bool>()) add_equations_section_from_module(report, mech, analysis, common.format);
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (vm.count("plot")) {
     if (analysis.positions.empty()) report.warnings.push_back("no positions to plot; --plot file not written");

@@ -168,3 +168,8 @@ void add_equations_section(io::Report& report, const mechanism::Mechanism& mech,
 }
 
 }  // namespace gearkit::cli
+
+extern "C" void gearkit_add_equations_section(gearkit::io::Report& report, const gearkit::mechanism::Mechanism& mech,
+                                              const gearkit::cli::KinAnalysis& analysis, gearkit::io::Format format) {
+  gearkit::cli::add_equations_section(report, mech, analysis, format);
+}

@@ -16,4 +16,15 @@ namespace gearkit::cli {
 /// @throws io::InputError for a malformed section (file:line:column).
 void add_equations_section(io::Report& report, const mechanism::Mechanism& mech, const KinAnalysis& analysis, io::Format format);
 
+/// The same, from the executable: the function lives in the module gearkit-kin-equations.so
+/// (cli/CMakeLists.txt says why), opened by its absolute path beside the executable's libraries
+/// the first time it is called and kept open until the process ends.
+/// @throws std::runtime_error when the module cannot be opened (a broken installation).
+void add_equations_section_from_module(io::Report& report, const mechanism::Mechanism& mech, const KinAnalysis& analysis,
+                                       io::Format format);
+
+/// The module's entry point: add_equations_section with C linkage, so dlsym finds it by name.
+using AddEquationsSection = void (*)(io::Report&, const mechanism::Mechanism&, const KinAnalysis&, io::Format);
+inline constexpr const char* kAddEquationsSectionSymbol = "gearkit_add_equations_section";
+
 }  // namespace gearkit::cli

@@ -66,43 +66,38 @@ void flush_standard_output() {
                                              : "cannot write to standard output");
 }
 
-// Out of memory must end as "gearkit: internal error: out of memory" and status 1. The first
-// failed allocation releases a reserve so that the unwinding that follows can allocate
-// (nlohmann::json's destructor does, in a noexcept context: without the reserve a std::bad_alloc
-// there calls std::terminate and the process aborts with status 134).
-void* memory_reserve = nullptr;
-
-void on_allocation_failure() {
-  if (memory_reserve) {
-    std::free(memory_reserve);
-    memory_reserve = nullptr;
-  }
-  throw std::bad_alloc();
+// Out of memory must end as "gearkit: internal error: out of memory" and status 1, never as an
+// abort or a crash. Unwinding from a failed allocation is not safe with the JSON library we use:
+// nlohmann::json 3.11.2 destroys a half-built array through a null pointer (a segmentation
+// fault seen at one memory limit of tests/cli/test_out_of_memory.cpp). So the first failed
+// allocation ends the process where it happens, as a kill would: destinations are untouched and
+// a temporary file left beside one is removed by the next run that writes there (docs/cli.md).
+[[noreturn]] void on_allocation_failure() {
+  static constexpr char line[] = "gearkit: internal error: out of memory\n";
+  [[maybe_unused]] const auto written = ::write(STDERR_FILENO, line, sizeof line - 1);
+  std::_Exit(1);
 }
 
 // Anything that still reaches std::terminate (an exception escaping a noexcept function) is
 // reported as one line and status 1, never as an abort with a core dump.
 [[noreturn]] void on_terminate() {
   const char* what = "unknown exception";
-  bool oom = false;
   try {
     if (auto e = std::current_exception()) std::rethrow_exception(e);
   } catch (const std::bad_alloc&) {
-    oom = true;
+    what = "out of memory";
   } catch (const std::exception& e) {
     what = e.what();
   } catch (...) {
   }
   const char* prefix = "gearkit: internal error: ";
-  ::write(STDERR_FILENO, prefix, std::strlen(prefix));
-  if (oom) what = "out of memory";
-  ::write(STDERR_FILENO, what, std::strlen(what));
-  ::write(STDERR_FILENO, "\n", 1);
+  [[maybe_unused]] auto written = ::write(STDERR_FILENO, prefix, std::strlen(prefix));
+  written = ::write(STDERR_FILENO, what, std::strlen(what));
+  written = ::write(STDERR_FILENO, "\n", 1);
   std::_Exit(1);
 }
 
 void install_out_of_memory_handling() {
-  memory_reserve = std::malloc(std::size_t{32} << 20);
   std::set_new_handler(on_allocation_failure);
   std::set_terminate(on_terminate);
 }
