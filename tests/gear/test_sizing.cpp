@@ -46,12 +46,16 @@ TEST(Sizing, CandidatesAreSafeAndNarrowest) {
   for (std::size_t i = 0; i < r.best.size(); ++i) {
     const auto& c = r.best[i];
     EXPECT_GE(margin(c, s, c.b), 1.0);
-    if (c.b - 1.0 >= s.width_module_min * c.m_n) EXPECT_LT(margin(c, s, c.b - 1.0), 1.0);
+    if (c.b - 1.0 >= s.width_module_min * c.m_n) {
+      EXPECT_LT(margin(c, s, c.b - 1.0), 1.0);
+    }
     EXPECT_LE(std::fabs(c.u / s.ratio - 1.0), s.ratio_tolerance + 1e-12);
     EXPECT_LE(c.b, s.width_ratio_max * c.d1 + 1e-9);
     EXPECT_GE(c.b, s.width_module_min * c.m_n - 1e-9);
     EXPECT_NEAR(c.volume, c.b * std::acos(-1.0) / 4.0 * (c.d1 * c.d1 + c.d2 * c.d2), 1e-6 * c.volume);
-    if (i > 0) EXPECT_GE(c.volume, r.best[i - 1].volume);
+    if (i > 0) {
+      EXPECT_GE(c.volume, r.best[i - 1].volume);
+    }
   }
 }
 

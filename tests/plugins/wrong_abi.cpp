@@ -6,14 +6,7 @@
 
 GEARKIT_TEST_MARKER("wrong_abi")
 
-extern "C" {
-extern const gearkit::plugin::PluginStamp gearkit_plugin_stamp;
-__attribute__((visibility("default"), used, section(".gearkit_plugin"))) const gearkit::plugin::PluginStamp
-    gearkit_plugin_stamp = {{'g', 'e', 'a', 'r', 'k', 'i', 't', '\0'},
-                            gearkit::plugin::kApiVersion,
-                            sizeof(gearkit::plugin::PluginStamp),
-                            gearkit::plugin::kCommandAbi ^ 1u};
-}
+GEARKIT_PLUGIN_STAMP(gearkit::plugin::kApiVersion, gearkit::plugin::kCommandAbi ^ 1u)
 GEARKIT_PLUGIN_EXPORT const gearkit::plugin::PluginInfo* gearkit_plugin_info() {
   static const gearkit::plugin::PluginInfo info{"test-wrong-abi", "1.0", "another layout"};
   return &info;

@@ -136,17 +136,22 @@ struct PluginStamp {
 
 #define GEARKIT_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
+/// The stamp itself, with the API version and command ABI given (GEARKIT_PLUGIN uses this
+/// build's; the host's tests stamp modules with others to check that they are refused).
+#define GEARKIT_PLUGIN_STAMP(API_VERSION, COMMAND_ABI)                                                  \
+  extern "C" {                                                                                          \
+  __attribute__((visibility("default"))) extern const ::gearkit::plugin::PluginStamp gearkit_plugin_stamp; \
+  __attribute__((used, section(".gearkit_plugin"))) const ::gearkit::plugin::PluginStamp             \
+      gearkit_plugin_stamp = {{'g', 'e', 'a', 'r', 'k', 'i', 't', '\0'},                                \
+                              (API_VERSION),                                                            \
+                              sizeof(::gearkit::plugin::PluginStamp),                                    \
+                              (COMMAND_ABI)};                                                           \
+  }
+
 /// Declares a plugin: its stamp (read from the file before loading it) and its info. The plugin
 /// then defines `GEARKIT_PLUGIN_EXPORT void gearkit_plugin_register(gearkit::plugin::PluginRegistrar& r)`.
 #define GEARKIT_PLUGIN(NAME, VERSION, SUMMARY)                                                          \
-  extern "C" {                                                                                          \
-  extern const ::gearkit::plugin::PluginStamp gearkit_plugin_stamp;                                     \
-  __attribute__((visibility("default"), used, section(".gearkit_plugin"))) const ::gearkit::plugin::PluginStamp \
-      gearkit_plugin_stamp = {{'g', 'e', 'a', 'r', 'k', 'i', 't', '\0'},                                 \
-                              ::gearkit::plugin::kApiVersion,                                            \
-                              sizeof(::gearkit::plugin::PluginStamp),                                    \
-                              ::gearkit::plugin::kCommandAbi};                                           \
-  }                                                                                                     \
+  GEARKIT_PLUGIN_STAMP(::gearkit::plugin::kApiVersion, ::gearkit::plugin::kCommandAbi)                  \
   GEARKIT_PLUGIN_EXPORT const ::gearkit::plugin::PluginInfo* gearkit_plugin_info() {                   \
     static const ::gearkit::plugin::PluginInfo info{NAME, VERSION, SUMMARY};                            \
     return &info;                                                                                       \
