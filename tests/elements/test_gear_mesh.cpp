@@ -118,7 +118,8 @@ TEST(GearMesh, SpurToothForcesMatchTheHandCalculation) {
 TEST(GearMesh, HelicalToothForcesMatchTheHandCalculation) {
   GearMeshParameters p = spur(0.002);
   p.helix_angle = 15 * kDeg;
-  const auto& values = mesh_reaction(loaded_pair(p, -10.0)).values;
+  const kin::ForceAnalysis f = loaded_pair(p, -10.0);  // the reaction refers into it
+  const auto& values = mesh_reaction(f).values;
   EXPECT_NEAR(value_of(values, "F_t"), 241.48146, 1e-5);
   EXPECT_NEAR(value_of(values, "F_r"), 90.99256, 1e-5);
   EXPECT_NEAR(value_of(values, "F_n"), 266.04444, 1e-5);
@@ -126,10 +127,12 @@ TEST(GearMesh, HelicalToothForcesMatchTheHandCalculation) {
 }
 
 TEST(GearMesh, WithoutAModuleOnlyTorques) {
-  const auto& values = mesh_reaction(loaded_pair(spur(0.002), -10.0)).values;
+  const kin::ForceAnalysis with_module = loaded_pair(spur(0.002), -10.0);
+  const auto& values = mesh_reaction(with_module).values;
   GearMeshParameters p = spur(0.002);
   p.module.reset();
-  const auto& bare = mesh_reaction(loaded_pair(p, -10.0)).values;
+  const kin::ForceAnalysis without_module = loaded_pair(p, -10.0);
+  const auto& bare = mesh_reaction(without_module).values;
   EXPECT_EQ(bare.size(), 2u);
   EXPECT_EQ(value_of(bare, "T_2"), value_of(values, "T_2"));
 }
