@@ -89,6 +89,7 @@ SparseRank dense_rank(const Eigen::SparseMatrix<double>& jt) {
 }  // namespace
 
 DofReport dof(const Model& model, Data& data) {
+  check_data(model, data);
   DofReport r;
   const CountedRows counted = count_rows(model, r);
   evaluate_constraints(model, data, data.t);

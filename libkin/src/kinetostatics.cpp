@@ -51,6 +51,7 @@ ConstraintReaction reaction_of(const Model& model, const Data& data, int k, cons
 }  // namespace
 
 Eigen::VectorXd applied_forces(const Model& model, const Data& data) {
+  check_data(model, data);
   Eigen::VectorXd Q = Eigen::VectorXd::Zero(model.coordinates());
   for (std::size_t i = 0; i < model.bodies().size(); ++i) {
     const Body& b = model.bodies()[i];
@@ -77,6 +78,7 @@ Eigen::VectorXd applied_forces(const Model& model, const Data& data) {
 }
 
 double potential_energy(const Model& model, const Data& data) {
+  check_data(model, data);
   double v = 0.0;
   for (std::size_t i = 0; i < model.bodies().size(); ++i) {
     const Body& b = model.bodies()[i];
@@ -90,6 +92,7 @@ double potential_energy(const Model& model, const Data& data) {
 }
 
 double kinetic_energy(const Model& model, const Data& data) {
+  check_data(model, data);
   double t = 0.0;
   for (std::size_t i = 0; i < model.bodies().size(); ++i) {
     const Body& b = model.bodies()[i];
@@ -101,6 +104,7 @@ double kinetic_energy(const Model& model, const Data& data) {
 }
 
 ForceAnalysis solve_forces(const Model& model, Data& data) {
+  check_data(model, data);
   if (!data.factored) factorize(model, data);
   if (data.singular)
     throw std::runtime_error("kinetostatics at a singular configuration (dead point): the driving effort is unbounded");

@@ -15,6 +15,7 @@ int Model::add_body(Body body) {
     throw std::invalid_argument("duplicate body name '" + body.name + "'");
   body_by_name_.emplace(body.name, static_cast<int>(bodies_.size()));
   bodies_.push_back(std::move(body));
+  ++revision_;
   return static_cast<int>(bodies_.size()) - 1;
 }
 
@@ -32,6 +33,7 @@ int Model::add_constraint(std::string name, std::shared_ptr<const Constraint> co
   equations_ += rows;
   const int index = static_cast<int>(constraints_.size()) - 1;
   if (driver) drivers_.push_back({index, DriverQuantity::angle, 0.0});
+  ++revision_;
   return index;
 }
 
@@ -40,6 +42,7 @@ void Model::set_driver(int constraint, DriverQuantity quantity, double value) {
     if (d.constraint == constraint) {
       d.quantity = quantity;
       d.value = value;
+      ++revision_;
       return;
     }
   throw std::invalid_argument("constraint " + std::to_string(constraint) + " is not a driver");

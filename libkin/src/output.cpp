@@ -59,6 +59,7 @@ double dot_body(const Eigen::Matrix<double, 1, 6>& jac, int slot, int body, cons
 }  // namespace
 
 OutputValue evaluate_output(const Model& model, const Data& data, const Output& output) {
+  check_data(model, data);
   OutputValue v;
   switch (output.kind) {
     case OutputKind::point_x:
@@ -88,6 +89,7 @@ OutputValue evaluate_output(const Model& model, const Data& data, const Output& 
 }
 
 double output_derivative(const Model& model, const Data& data, const Output& output, const Eigen::VectorXd& dq) {
+  check_data(model, data);
   switch (output.kind) {
     case OutputKind::point_x:
     case OutputKind::point_y: {

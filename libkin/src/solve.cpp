@@ -16,9 +16,26 @@ bool is_square(const Model& model) { return model.equations() == model.coordinat
 
 }  // namespace
 
+void check_data(const Model& model, const Data& data) {
+  const Data::Shape& s = data.shape;
+  const int bodies = static_cast<int>(model.bodies().size()), constraints = static_cast<int>(model.constraints().size());
+  const int drivers = static_cast<int>(model.drivers().size());
+  if (s.bodies == bodies && s.constraints == constraints && s.equations == model.equations() && s.drivers == drivers &&
+      s.revision == model.revision())
+    return;
+  throw DataMismatch("kin: the Data was made for a model with " + std::to_string(s.bodies) + " bodies, " +
+                     std::to_string(s.constraints) + " constraints, " + std::to_string(s.equations) + " equations and " +
+                     std::to_string(s.drivers) + " drivers (revision " + std::to_string(s.revision) +
+                     "); this model has " + std::to_string(bodies) + ", " + std::to_string(constraints) + ", " +
+                     std::to_string(model.equations()) + " and " + std::to_string(drivers) + " (revision " +
+                     std::to_string(model.revision()) + "): make a new Data after changing the model");
+}
+
 Data::Data(const Model& model) {
   const int n = model.coordinates();
   const int m = model.equations();
+  shape = {static_cast<int>(model.bodies().size()), static_cast<int>(model.constraints().size()), m,
+           static_cast<int>(model.drivers().size()), model.revision()};
   q = Eigen::VectorXd::Zero(n);
   for (std::size_t i = 0; i < model.bodies().size(); ++i) {
     const Body& b = model.bodies()[i];
@@ -144,9 +161,13 @@ void evaluate_rows(const Model& model, Data& data, double t, Refresh refresh) {
 
 }  // namespace
 
-void evaluate_constraints(const Model& model, Data& data, double t) { evaluate_rows(model, data, t, Refresh::all); }
+void evaluate_constraints(const Model& model, Data& data, double t) {
+  check_data(model, data);
+  evaluate_rows(model, data, t, Refresh::all);
+}
 
 bool factorize(const Model& model, Data& data) {
+  check_data(model, data);
   data.factored = true;
   data.singular = false;
   data.determinant_sign = 0;
@@ -220,6 +241,7 @@ bool chord_step(const Model& model, Data& data, double t, const SolverOptions& o
 }  // namespace
 
 PositionReport solve_position(const Model& model, Data& data, double t, const SolverOptions& options) {
+  check_data(model, data);
   PositionReport report;
   if (model.equations() < model.coordinates()) {
     report.message = "under-driven: " + std::to_string(model.coordinates()) + " coordinates but only " +
@@ -274,6 +296,7 @@ PositionReport solve_position(const Model& model, Data& data, double t, const So
 }
 
 bool solve_velocity(const Model& model, Data& data) {
+  check_data(model, data);
   if (!data.factored && !factorize(model, data)) return false;
   if (data.singular) return false;
   data.qd = -data.phi_t;
@@ -284,6 +307,7 @@ bool solve_velocity(const Model& model, Data& data) {
 }
 
 bool solve_velocity_along(const Model& model, Data& data, const Eigen::VectorXd& dq, double input_speed) {
+  check_data(model, data);
   if (!data.factored && !factorize(model, data)) return false;
   if (data.singular) return false;
   data.qd = input_speed * dq;
@@ -292,6 +316,7 @@ bool solve_velocity_along(const Model& model, Data& data, const Eigen::VectorXd&
 }
 
 bool solve_acceleration(const Model& model, Data& data) {
+  check_data(model, data);
   if (!data.factored && !factorize(model, data)) return false;
   if (data.singular) return false;
   data.qdd = data.gamma;
@@ -300,6 +325,7 @@ bool solve_acceleration(const Model& model, Data& data) {
 }
 
 bool input_sensitivity(const Model& model, Data& data, int driver, Eigen::VectorXd& dq) {
+  check_data(model, data);
   if (!data.factored && !factorize(model, data)) return false;
   if (data.singular) return false;
   // d Phi / d f0 is -1 on the driver's row, so Phi_q dq/df0 = e_row.

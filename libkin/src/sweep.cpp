@@ -123,6 +123,7 @@ OutputExtreme locate_extreme(const Model& model, Data& data, const SweepOptions&
 }  // namespace
 
 PositionReport solve_at(const Model& model, Data& data, int driver, double value, const SolverOptions& options) {
+  check_data(model, data);
   if (driver < 0 || driver >= static_cast<int>(model.drivers().size()))
     throw std::invalid_argument("driver index " + std::to_string(driver) + " out of range");
   data.inputs(driver) = value;
@@ -141,6 +142,7 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
 }
 
 void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result) {
+  check_data(model, data);
   if (options.driver < 0 || options.driver >= static_cast<int>(model.drivers().size()))
     throw std::invalid_argument("sweep: driver index " + std::to_string(options.driver) + " out of range");
   if (!(options.step > 0.0)) throw std::invalid_argument("sweep: the step must be positive");

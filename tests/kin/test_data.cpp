@@ -2,7 +2,10 @@
 // start, the fixed pattern of Phi_q and its assembly from the constraints' blocks.
 #include <gearkit/kin/angle_relation.hpp>
 #include <gearkit/kin/data.hpp>
+#include <gearkit/kin/dof.hpp>
+#include <gearkit/kin/kinetostatics.hpp>
 #include <gearkit/kin/solve.hpp>
+#include <gearkit/kin/sweep.hpp>
 
 #include <gtest/gtest.h>
 
@@ -16,6 +19,42 @@ namespace gearkit::kin {
 namespace {
 
 using testing::kDeg;
+
+// Issue 12 item 3: a body added after the Data was made wrote out of bounds in
+// Revolute::evaluate (AddressSanitizer: SEGV); every algorithm now checks the Data first.
+TEST(Data, AChangedModelIsRefusedInsteadOfReadOutOfBounds) {
+  Model m = testing::four_bar({0.040, 0.120, 0.080, 0.100}, 30 * kDeg);
+  Data data(m);
+  ASSERT_NO_THROW(check_data(m, data));
+  ASSERT_TRUE(solve_position(m, data, 0.0).converged);
+  const int extra = testing::add_link(m, "extra", 0.0, {{"P", {0.0, 0.0}}, {"Q", {0.05, 0.0}}});
+  testing::pin(m, "P", extra, "P", kGround, "O2");
+  EXPECT_THROW(solve_position(m, data, 0.0), DataMismatch);
+  EXPECT_THROW(evaluate_constraints(m, data, 0.0), DataMismatch);
+  EXPECT_THROW(solve_velocity(m, data), DataMismatch);
+  EXPECT_THROW(dof(m, data), DataMismatch);
+  EXPECT_THROW(solve_forces(m, data), DataMismatch);
+  try {
+    check_data(m, data);
+    ADD_FAILURE() << "no DataMismatch";
+  } catch (const DataMismatch& e) {
+    EXPECT_NE(std::string(e.what()).find("3 bodies"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("make a new Data"), std::string::npos) << e.what();
+  }
+  Data fresh(m);  // a new Data fits the changed model
+  EXPECT_NO_THROW(check_data(m, fresh));
+}
+
+TEST(Data, ADataOfAnotherModelIsRefused) {
+  const Model four_bar = testing::four_bar({0.040, 0.120, 0.080, 0.100}, 30 * kDeg);
+  const Model chain = testing::four_bar_chain({0.040, 0.120, 0.080, 0.100}, 3);
+  Data data(four_bar);
+  EXPECT_THROW(solve_position(chain, data, 0.0), DataMismatch);
+  SweepOptions o;
+  o.step = 0.1;
+  o.end = 1.0;
+  EXPECT_THROW(sweep(chain, data, o), DataMismatch);
+}
 
 TEST(Data, StartsFromTheDrawingWithThePatternOfEveryBlock) {
   const Model m = testing::four_bar({0.040, 0.120, 0.080, 0.100}, 30 * kDeg);

@@ -6,7 +6,9 @@
 #include <gearkit/kin/model.hpp>
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace gearkit::kin {
@@ -83,6 +85,25 @@ class Data {
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> dense_qr;  ///< for redundant (non-square) systems
   Eigen::VectorXd work;  ///< scratch of size coordinates()
   Eigen::VectorXd step;  ///< Newton step / right-hand side scratch
+
+  /// What the workspace was sized for (Pinocchio's checkData): see check_data().
+  struct Shape {
+    int bodies = 0, constraints = 0, equations = 0, drivers = 0;
+    std::uint64_t revision = 0;  ///< Model::revision() when the Data was made
+  };
+  Shape shape;
 };
+
+/// A Data used with a model it was not made for, or with its model after a change that resizes
+/// the workspace (a body, constraint or driver added): a programming error.
+class DataMismatch : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+/// Checks that `data` was made for `model` as it is now. Every algorithm of libkin calls it
+/// first, so a mismatch is this error instead of reads and writes out of bounds.
+/// @throws DataMismatch naming what differs.
+void check_data(const Model& model, const Data& data);
 
 }  // namespace gearkit::kin

@@ -5,6 +5,7 @@
 // its per-analysis state in a Data (data.hpp). All quantities SI: m, rad, kg, kg m^2, N, N m.
 #include <gearkit/kin/constraint.hpp>
 #include <gearkit/kin/joints.hpp>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -110,6 +111,11 @@ class Model {
   /// True if there are masses, forces, torques or springs to analyse.
   bool has_loads() const;
 
+  /// Counts the changes that size a Data: add_body, add_constraint and set_driver each add one.
+  /// A Data remembers the revision it was made for; check_data() refuses it after a change.
+  /// (Loads, gravity and the ground's points may change freely: nothing in Data depends on them.)
+  std::uint64_t revision() const { return revision_; }
+
  private:
   Body ground_ = named_ground();
   static Body named_ground() {
@@ -127,6 +133,7 @@ class Model {
   std::vector<Spring> springs_;
   Eigen::Vector2d gravity_ = Eigen::Vector2d::Zero();
   int equations_ = 0;
+  std::uint64_t revision_ = 0;
 };
 
 }  // namespace gearkit::kin
