@@ -2,8 +2,10 @@
 // `gearkit kin`: the analysis results of one run, independent of how they are printed.
 #include <gearkit/mechanism/reader.hpp>
 #include <gearkit/kin/dof.hpp>
+#include <gearkit/kin/fourbar.hpp>
 #include <gearkit/kin/kinetostatics.hpp>
 #include <gearkit/kin/sweep.hpp>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +22,9 @@ struct KinPosition {
   std::optional<kin::ForceAnalysis> forces;  ///< when the model has loads
 };
 
+/// What an analysis keeps. A sweep streams its positions (PositionSink) and keeps none here;
+/// the single-position analysis keeps its one position, and the animation is handed its frames
+/// in `positions`.
 struct KinAnalysis {
   kin::DofReport dof;
   int driver = 0;
@@ -31,8 +36,27 @@ struct KinAnalysis {
   bool single = false;
 };
 
-/// Fills a KinPosition from a solved Data (positions, velocities, accelerations done).
-KinPosition describe_position(const mechanism::Mechanism& mech, kin::Data& data, int driver, double input);
+/// Fills `p` from a solved Data (q, qd, qdd set; factorised at q when `dq` is null or the model
+/// has loads), reusing p's storage. `four_bar`: the model's four-bar (kin::find_four_bar), for the
+/// transmission angle; `dq`: the input sensitivity when known (a sweep has it), else solved.
+void describe_position(const mechanism::Mechanism& mech, const std::optional<kin::FourBar>& four_bar, kin::Data& data,
+                       int driver, double input, const Eigen::VectorXd* dq, KinPosition& p);
+
+/// Receives each position of a sweep as it is solved, in order; the position is reused for the
+/// next one (copy what must outlive the call).
+using PositionSink = std::function<void(const KinPosition&)>;
+
+/// One position at `at` (the drawn input when absent), reached by continuation from the drawn
+/// configuration so that it stays on the drawing's assembly branch. `dof` is the mobility found
+/// at the drawing. Problems (unreachable input, dead point) are warnings with no position.
+KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, int driver, std::optional<double> at,
+                           const kin::DofReport& dof);
+
+/// A sweep of the driver over `range`: each position goes to `sink` as it is solved, so memory
+/// does not grow with the number of positions; the result holds dead points, extremes and
+/// warnings, no positions.
+KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int driver, const mechanism::DriverRange& range,
+                          const kin::DofReport& dof, const PositionSink& sink);
 
 /// The SVG animation of the mechanism through the positions (SMIL, loops forever).
 std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis);

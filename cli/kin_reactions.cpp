@@ -16,19 +16,33 @@ std::string key_with_unit(const kin::ReactionValue& v) {
 
 }  // namespace
 
-nlohmann::json reaction_json(const kin::Model& model, const kin::ConstraintReaction& r) {
-  nlohmann::json j;
-  j["joint"] = r.name;
-  j["kind"] = r.kind;
-  j["on"] = model.body_name(r.body);
-  j["force_N"] = {r.force.x(), r.force.y()};
-  if (r.moment != 0.0 || r.kind == "prismatic") j["moment_Nm"] = r.moment;
-  if (!r.values.empty()) {
-    nlohmann::json values = nlohmann::json::object();
-    for (const kin::ReactionValue& v : r.values) values[key_with_unit(v)] = v.value;
-    j["values"] = values;
+void write_reaction(io::JsonWriter& w, const kin::Model& model, const kin::ConstraintReaction& r) {
+  w.begin_object();
+  w.key("joint");
+  w.value(r.name);
+  w.key("kind");
+  w.value(r.kind);
+  w.key("on");
+  w.value(model.body_name(r.body));
+  w.key("force_N");
+  w.begin_array();
+  w.value(r.force.x());
+  w.value(r.force.y());
+  w.end_array();
+  if (r.moment != 0.0 || r.kind == "prismatic") {
+    w.key("moment_Nm");
+    w.value(r.moment);
   }
-  return j;
+  if (!r.values.empty()) {
+    w.key("values");
+    w.begin_object();
+    for (const kin::ReactionValue& v : r.values) {
+      w.key(key_with_unit(v));
+      w.value(v.value);
+    }
+    w.end_object();
+  }
+  w.end_object();
 }
 
 std::optional<io::Table> element_reaction_table(const kin::ForceAnalysis& forces) {

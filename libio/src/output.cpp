@@ -12,6 +12,7 @@
 #include <mutex>
 #include <ostream>
 #include <random>
+#include <stdexcept>
 #include <streambuf>
 #include <dirent.h>
 #include <fcntl.h>
@@ -172,6 +173,8 @@ struct OutputSet::Output {
   int fd = -1;
   bool in_place = false;   ///< copy into the existing inode instead of renaming over it
   bool streamed = false;
+  bool reserved = false;   ///< reserve()d: its content comes with fill(), or it is dropped
+  bool filled = false;
   std::string deferred;    ///< add()'s content for standard output and devices
   std::unique_ptr<FdBuffer> buffer;
   std::unique_ptr<std::ostream> stream;
@@ -387,7 +390,22 @@ void OutputSet::move_into_place() {
   }
 }
 
+void OutputSet::reserve(std::string_view option, const std::string& path) { add_output(option, path).reserved = true; }
+
+void OutputSet::fill(std::string_view option, std::string_view content) {
+  for (auto& out : outputs_) {
+    if (!out->reserved || out->filled || out->option != option) continue;
+    if (out->kind == Kind::file) out->stream->write(content.data(), static_cast<std::streamsize>(content.size()));
+    else out->deferred.assign(content);
+    out->filled = true;
+    return;
+  }
+  throw std::logic_error(fmt::format("OutputSet::fill: no output reserved for '{}'", option));
+}
+
 void OutputSet::commit() {
+  // A reserved output never filled is dropped: its destination stays as it was.
+  std::erase_if(outputs_, [](const std::unique_ptr<Output>& out) { return out->reserved && !out->filled; });
   // Order: every temporary complete on disk, then the outputs that cannot be taken back
   // (standard output, devices), then the renames, which cannot fail for want of space.
   finish_temporaries();

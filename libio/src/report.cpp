@@ -2,19 +2,21 @@
 
 #include <gearkit/io/error.hpp>
 
+#include "table_text.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <ostream>
 #include <sstream>
 
 namespace gearkit::io {
 
-namespace {
+namespace detail {
 
-// Display width of a UTF-8 string (counts code points, which is right for the symbols used:
-// °, α, ε, µ).
 std::size_t display_width(std::string_view s) {
   std::size_t w = 0;
   for (unsigned char c : s)
@@ -22,51 +24,82 @@ std::size_t display_width(std::string_view s) {
   return w;
 }
 
-std::string pad(const std::string& s, std::size_t width, bool right) {
-  std::size_t w = display_width(s);
-  if (w >= width) return s;
-  std::string fill(width - w, ' ');
-  return right ? fill + s : s + fill;
-}
+namespace {
 
+const std::string kEmpty;
+
+// A number as strtod reads one, without its cost (text tables test every cell): sign, digits,
+// point, digits, exponent; or inf/nan.
 bool looks_numeric(const std::string& s) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  std::strtod(s.c_str(), &end);
-  return end && *end == '\0';
+  std::size_t i = 0;
+  if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+  if (s.compare(i, std::string::npos, "inf") == 0 || s.compare(i, std::string::npos, "nan") == 0) return true;
+  bool digits = false;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, digits = true;
+  if (i < s.size() && s[i] == '.') ++i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, digits = true;
+  if (!digits) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+    bool exponent = false;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i, exponent = true;
+    if (!exponent) return false;
+  }
+  return i == s.size();
 }
 
-void render_text_table(const Table& t, std::ostream& out) {
-  if (!t.title.empty()) out << t.title << "\n";
-  std::size_t ncol = t.header.size();
-  for (const auto& r : t.rows) ncol = std::max(ncol, r.size());
-  std::vector<std::size_t> width(ncol, 0);
-  auto measure = [&](const std::vector<std::string>& r) {
-    for (std::size_t i = 0; i < r.size(); ++i) width[i] = std::max(width[i], display_width(r[i]));
-  };
-  measure(t.header);
-  for (const auto& r : t.rows) measure(r);
-  auto line = [&](const std::vector<std::string>& r, bool header) {
-    std::string s = "  ";
-    for (std::size_t i = 0; i < ncol; ++i) {
-      std::string cell = i < r.size() ? r[i] : "";
-      bool right = !header && i > 0 && looks_numeric(cell);
-      s += pad(cell, width[i], right);
-      if (i + 1 < ncol) s += "  ";
-    }
-    while (!s.empty() && s.back() == ' ') s.pop_back();
-    out << s << "\n";
-  };
-  if (!t.header.empty()) {
-    line(t.header, true);
-    std::string rule = "  ";
-    for (std::size_t i = 0; i < ncol; ++i) {
-      rule += std::string(width[i], '-');
-      if (i + 1 < ncol) rule += "  ";
-    }
-    out << rule << "\n";
+void append_csv_cell(std::string& out, const std::string& s) {
+  bool plain = true;
+  for (const char c : s) plain = plain && c != ',' && c != '"' && c != '\n' && c != '\r';
+  if (plain) {
+    out += s;
+    return;
   }
-  for (const auto& r : t.rows) line(r, false);
+  out += '"';
+  for (char c : s) {
+    if (c == '"') out += "\"\"";
+    else out += c;
+  }
+  out += '"';
+}
+
+}  // namespace
+
+void widen(std::vector<std::size_t>& width, const std::vector<std::string>& row) {
+  if (width.size() < row.size()) width.resize(row.size(), 0);
+  for (std::size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], display_width(row[i]));
+}
+
+void text_line(std::string& s, const std::vector<std::string>& row, const std::vector<std::size_t>& width, bool header) {
+  const std::size_t start = s.size();
+  s += "  ";
+  for (std::size_t i = 0; i < width.size(); ++i) {
+    const std::string& cell = i < row.size() ? row[i] : kEmpty;
+    const bool right = !header && i > 0 && looks_numeric(cell);
+    const std::size_t w = display_width(cell);
+    if (right && w < width[i]) s.append(width[i] - w, ' ');
+    s += cell;
+    if (!right && w < width[i]) s.append(width[i] - w, ' ');
+    if (i + 1 < width.size()) s += "  ";
+  }
+  while (s.size() > start && s.back() == ' ') s.pop_back();
+  s += '\n';
+}
+
+void text_line(std::ostream& out, const std::vector<std::string>& row, const std::vector<std::size_t>& width, bool header) {
+  std::string s;
+  text_line(s, row, width, header);
+  out << s;
+}
+
+void text_rule(std::ostream& out, const std::vector<std::size_t>& width) {
+  std::string rule = "  ";
+  for (std::size_t i = 0; i < width.size(); ++i) {
+    rule += std::string(width[i], '-');
+    if (i + 1 < width.size()) rule += "  ";
+  }
+  out << rule << "\n";
 }
 
 std::string md_escape(const std::string& s) {
@@ -78,44 +111,87 @@ std::string md_escape(const std::string& s) {
   return r;
 }
 
-void render_md_table(const Table& t, std::ostream& out) {
+void md_row(std::string& s, const std::vector<std::string>& row, std::size_t columns) {
+  s += '|';
+  for (std::size_t i = 0; i < columns; ++i) {
+    s += ' ';
+    s += md_escape(i < row.size() ? row[i] : kEmpty);
+    s += " |";
+  }
+  s += '\n';
+}
+
+void md_row(std::ostream& out, const std::vector<std::string>& row, std::size_t columns) {
+  std::string s;
+  md_row(s, row, columns);
+  out << s;
+}
+
+void md_table_head(std::ostream& out, const Table& t, std::size_t columns) {
   if (!t.title.empty()) out << "### " << md_escape(t.title) << "\n\n";
-  std::size_t ncol = t.header.size();
-  for (const auto& r : t.rows) ncol = std::max(ncol, r.size());
-  if (ncol == 0) return;
-  auto row = [&](const std::vector<std::string>& r) {
-    out << "|";
-    for (std::size_t i = 0; i < ncol; ++i) out << " " << md_escape(i < r.size() ? r[i] : "") << " |";
-    out << "\n";
-  };
-  row(t.header.empty() ? std::vector<std::string>(ncol, "") : t.header);
+  md_row(out, t.header.empty() ? std::vector<std::string>(columns, "") : t.header, columns);
   out << "|";
-  for (std::size_t i = 0; i < ncol; ++i) out << (i == 0 ? " --- |" : " ---: |");
-  out << "\n";
-  for (const auto& r : t.rows) row(r);
+  for (std::size_t i = 0; i < columns; ++i) out << (i == 0 ? " --- |" : " ---: |");
   out << "\n";
 }
 
-std::string csv_cell(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string r = "\"";
-  for (char c : s) {
-    if (c == '"') r += "\"\"";
-    else r += c;
+void csv_row(std::string& s, const std::vector<std::string>& row) {
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i) s += ',';
+    append_csv_cell(s, row[i]);
   }
-  return r + "\"";
+  s += '\n';
+}
+
+void csv_row(std::ostream& out, const std::vector<std::string>& row) {
+  std::string s;
+  csv_row(s, row);
+  out << s;
+}
+
+bool non_finite_text(std::string_view cell) {
+  std::size_t start = 0;
+  while (start <= cell.size()) {
+    std::size_t end = cell.find(' ', start);
+    std::string_view token = cell.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+    if (!token.empty() && (token.front() == '-' || token.front() == '+')) token.remove_prefix(1);
+    if (token == "nan" || token == "inf" || token == "NaN" || token == "Inf") return true;
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return false;
+}
+
+void render_text_table(const Table& t, std::ostream& out) {
+  if (!t.title.empty()) out << t.title << "\n";
+  std::vector<std::size_t> width;
+  detail::widen(width, t.header);
+  for (const auto& r : t.rows) detail::widen(width, r);
+  if (!t.header.empty()) {
+    detail::text_line(out, t.header, width, true);
+    detail::text_rule(out, width);
+  }
+  for (const auto& r : t.rows) detail::text_line(out, r, width, false);
+}
+
+void render_md_table(const Table& t, std::ostream& out) {
+  std::size_t ncol = t.header.size();
+  for (const auto& r : t.rows) ncol = std::max(ncol, r.size());
+  if (ncol == 0) {
+    if (!t.title.empty()) out << "### " << detail::md_escape(t.title) << "\n\n";
+    return;
+  }
+  detail::md_table_head(out, t, ncol);
+  for (const auto& r : t.rows) detail::md_row(out, r, ncol);
+  out << "\n";
 }
 
 void render_csv_table(const Table& t, std::ostream& out) {
-  auto row = [&](const std::vector<std::string>& r) {
-    for (std::size_t i = 0; i < r.size(); ++i) out << (i ? "," : "") << csv_cell(r[i]);
-    out << "\n";
-  };
-  if (!t.header.empty()) row(t.header);
-  for (const auto& r : t.rows) row(r);
+  if (!t.header.empty()) detail::csv_row(out, t.header);
+  for (const auto& r : t.rows) detail::csv_row(out, r);
 }
 
-}  // namespace
+}  // namespace detail
 
 Format parse_format(std::string_view s) {
   if (s == "text") return Format::text;
@@ -136,7 +212,7 @@ void render(const Report& report, Format format, std::ostream& out) {
     case Format::text: {
       if (!report.title.empty()) out << report.title << "\n\n";
       for (std::size_t i = 0; i < report.tables.size(); ++i) {
-        render_text_table(report.tables[i], out);
+        detail::render_text_table(report.tables[i], out);
         out << "\n";
       }
       for (const auto& n : report.notes) out << n << "\n";
@@ -150,11 +226,11 @@ void render(const Report& report, Format format, std::ostream& out) {
       return;
     }
     case Format::md: {
-      if (!report.title.empty()) out << "## " << md_escape(report.title) << "\n\n";
-      for (const auto& t : report.tables) render_md_table(t, out);
+      if (!report.title.empty()) out << "## " << detail::md_escape(report.title) << "\n\n";
+      for (const auto& t : report.tables) detail::render_md_table(t, out);
       for (const auto& n : report.notes) out << n << "\n\n";
       out << "**Warnings:**" << (report.warnings.empty() ? " none\n" : "\n\n");
-      for (const auto& w : report.warnings) out << "- " << md_escape(w) << "\n";
+      for (const auto& w : report.warnings) out << "- " << detail::md_escape(w) << "\n";
       return;
     }
     case Format::csv: {
@@ -162,7 +238,7 @@ void render(const Report& report, Format format, std::ostream& out) {
       for (std::size_t i = 0; i < report.tables.size(); ++i) {
         if (i) out << "\n";
         if (several && !report.tables[i].title.empty()) out << "# " << report.tables[i].title << "\n";
-        render_csv_table(report.tables[i], out);
+        detail::render_csv_table(report.tables[i], out);
       }
       for (const auto& w : report.warnings) out << "# warning: " << w << "\n";
       return;
@@ -178,18 +254,6 @@ std::string render(const Report& report, Format format) {
 
 namespace {
 
-bool non_finite_text(std::string_view cell) {
-  std::size_t start = 0;
-  while (start <= cell.size()) {
-    std::size_t end = cell.find(' ', start);
-    std::string_view token = cell.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
-    if (!token.empty() && (token.front() == '-' || token.front() == '+')) token.remove_prefix(1);
-    if (token == "nan" || token == "inf" || token == "NaN" || token == "Inf") return true;
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
-  return false;
-}
 
 // JSON paths of non-finite numbers, array indices written "[]" so that a column of a sweep
 // is named once.
@@ -212,29 +276,68 @@ std::vector<std::string> non_finite_quantities(const Report& report) {
   for (const Table& t : report.tables)
     for (const auto& row : t.rows)
       for (std::size_t c = 0; c < row.size(); ++c) {
-        if (!non_finite_text(row[c])) continue;
+        if (!detail::non_finite_text(row[c])) continue;
         std::string name = fmt::format("'{}' in table '{}'", c < t.header.size() ? t.header[c] : "?", t.title);
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
       }
   return names;
 }
 
-void warn_non_finite(Report& report) {
-  const std::vector<std::string> names = non_finite_quantities(report);
+std::vector<std::string> non_finite_warnings(const std::vector<std::string>& names) {
   constexpr std::size_t kShown = 8;
+  std::vector<std::string> warnings;
   for (std::size_t i = 0; i < names.size() && i < kShown; ++i)
-    report.warnings.push_back(fmt::format("non-finite result: {} is not a finite number (nan or inf; null in JSON): "
-                                          "the inputs put it out of range", names[i]));
+    warnings.push_back(fmt::format("non-finite result: {} is not a finite number (nan or inf; null in JSON): "
+                                   "the inputs put it out of range", names[i]));
   if (names.size() > kShown)
-    report.warnings.push_back(fmt::format("non-finite result: {} more quantities are not finite", names.size() - kShown));
+    warnings.push_back(fmt::format("non-finite result: {} more quantities are not finite", names.size() - kShown));
+  return warnings;
+}
+
+void warn_non_finite(Report& report) {
+  for (std::string& w : non_finite_warnings(non_finite_quantities(report))) report.warnings.push_back(std::move(w));
+}
+
+void append_fixed(std::string& out, double value, int digits) {
+  if (std::isnan(value)) {
+    out += "nan";
+    return;
+  }
+  if (std::isinf(value)) {
+    out += value > 0 ? "inf" : "-inf";
+    return;
+  }
+  const std::size_t start = out.size();
+  // Fast path: value * 10^digits rounded to an integer, exact unless the product lies within
+  // its own rounding error of a half (a tie), where the correctly rounded text comes from
+  // std::to_chars (Ryu printf) instead. A sweep formats millions of cells.
+  static constexpr double kPow10[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8};
+  const double scaled = digits >= 0 && digits <= 8 ? std::abs(value) * kPow10[digits] : INFINITY;
+  const double whole = std::nearbyint(scaled);
+  if (scaled < 1e15 && std::abs(std::abs(scaled - whole) - 0.5) > 1e-15 * scaled + 1e-9) {
+    auto units = static_cast<unsigned long long>(whole);
+    char text[32];
+    char* p = text + sizeof text;
+    for (int d = 0; d < digits; ++d, units /= 10) *--p = static_cast<char>('0' + units % 10);
+    if (digits > 0) *--p = '.';
+    do {
+      *--p = static_cast<char>('0' + units % 10);
+      units /= 10;
+    } while (units != 0);
+    if (value < 0 && whole != 0) *--p = '-';  // "-0.000" carries no information a reader can use
+    out.append(p, text + sizeof text);
+    return;
+  }
+  char text[400];
+  const auto [end, ec] = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, digits);
+  if (ec == std::errc()) out.append(text, end);
+  else out += fmt::format("{:.{}f}", value, digits);
+  if (out[start] == '-' && out.find_first_not_of("-0.", start) == std::string::npos) out.erase(start, 1);
 }
 
 std::string fixed(double value, int digits) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  std::string s = fmt::format("{:.{}f}", value, digits);
-  // "-0.000" carries no information a reader can use.
-  if (s.front() == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+  std::string s;
+  append_fixed(s, value, digits);
   return s;
 }
 

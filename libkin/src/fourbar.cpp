@@ -17,14 +17,22 @@ GrashofResult grashof(double ground, double crank, double coupler, double rocker
   const double pq = ground + crank + coupler + rocker - s - l;
   GrashofResult r{GrashofClass::triple_rocker, s, l, pq, {}};
   const double tolerance = 1e-9 * (s + l + pq);
+  const double mm = 1000.0;  // the text speaks the reports' unit
+  if (l > s + pq + tolerance) {
+    r.kind = GrashofClass::cannot_assemble;
+    r.text = fmt::format("cannot be assembled: the longest link l = {:.6g} mm exceeds the sum of the other three "
+                         "s + p + q = {:.6g} mm, so the loop never closes", l * mm, (s + pq) * mm);
+    return r;
+  }
   if (std::abs(s + l - pq) <= tolerance) {
     r.kind = GrashofClass::change_point;
-    r.text = fmt::format("change point (s + l = p + q = {:.6g} m): the linkage can flatten and switch branch", pq);
+    r.text = fmt::format("change point (s + l = p + q = {:.6g} mm): the linkage can flatten and switch branch", pq * mm);
     return r;
   }
   if (s + l > pq) {
     r.kind = GrashofClass::triple_rocker;
-    r.text = fmt::format("non-Grashof triple rocker (s + l = {:.6g} m > p + q = {:.6g} m): no link turns fully", s + l, pq);
+    r.text = fmt::format("non-Grashof triple rocker (s + l = {:.6g} mm > p + q = {:.6g} mm): no link turns fully",
+                         (s + l) * mm, pq * mm);
     return r;
   }
   if (shortest == 0) {
@@ -38,7 +46,7 @@ GrashofResult grashof(double ground, double crank, double coupler, double rocker
     r.text = shortest == 1 ? "Grashof crank-rocker (the input crank turns fully)"
                            : "Grashof rocker-crank (the output link turns fully)";
   }
-  r.text += fmt::format(" (s + l = {:.6g} m < p + q = {:.6g} m)", s + l, pq);
+  r.text += fmt::format(" (s + l = {:.6g} mm < p + q = {:.6g} mm)", (s + l) * mm, pq * mm);
   return r;
 }
 

@@ -16,13 +16,10 @@ bool is_square(const Model& model) { return model.equations() == model.coordinat
 
 }  // namespace
 
-void check_data(const Model& model, const Data& data) {
+void throw_data_mismatch(const Model& model, const Data& data) {
   const Data::Shape& s = data.shape;
   const int bodies = static_cast<int>(model.bodies().size()), constraints = static_cast<int>(model.constraints().size());
   const int drivers = static_cast<int>(model.drivers().size());
-  if (s.bodies == bodies && s.constraints == constraints && s.equations == model.equations() && s.drivers == drivers &&
-      s.revision == model.revision())
-    return;
   throw DataMismatch("kin: the Data was made for a model with " + std::to_string(s.bodies) + " bodies, " +
                      std::to_string(s.constraints) + " constraints, " + std::to_string(s.equations) + " equations and " +
                      std::to_string(s.drivers) + " drivers (revision " + std::to_string(s.revision) +

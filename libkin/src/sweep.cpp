@@ -142,13 +142,125 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options) {
 }
 
 void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result) {
+  // The samples of `result` are overwritten in place (their vectors keep their storage), so a
+  // repeated sweep does not allocate per position.
+  std::size_t used = 0;
+  sweep(model, data, options, result, [&](const SweepSample& s) {
+    if (used == result.samples.size()) result.samples.emplace_back();
+    SweepSample& kept = result.samples[used++];
+    kept.input = s.input;
+    kept.q = s.q;
+    kept.qd = s.qd;
+    kept.qdd = s.qdd;
+    kept.dq = s.dq;
+    kept.iterations = s.iterations;
+  });
+  result.samples.resize(used);
+}
+
+namespace {
+
+// The state of one sweep between samples: the last three anchors on the branch (for the
+// predictor), the chord-step bookkeeping and the output derivatives that bracket extremes.
+class Continuation {
+ public:
+  Continuation(const Model& model, Data& data, const SweepOptions& options, SweepResult& result, const Anchor& first)
+      : model_(model), data_(data), options_(options), result_(result), current_(first), previous_(first),
+        before_(first), next_(first), chord_(options.solver), last_derivative_(options.outputs.size(), 0.0),
+        derivative_(last_derivative_), last_significant_(options.outputs.size(), first) {
+    // Continuation steps take their first Newton step with the factorisation of the position
+    // they start from (SolverOptions::reuse_factorization), valid while nothing else has
+    // factorised since (a rejected step or the location of an extreme).
+    chord_.reuse_factorization = true;
+    derivatives_at(current_, last_derivative_);
+  }
+
+  const Anchor& current() const { return current_; }
+
+  /// Continuation with step halving from the current anchor to `target`. @returns false at a
+  /// dead point (the step fell below options.min_step); `iterations` of the last solve.
+  bool reach(double target, int& iterations) {
+    double h = target - current_.input;
+    while (current_.input != target) {
+      const double remaining = target - current_.input;
+      if (std::abs(h) > std::abs(remaining)) h = remaining;
+      if (advance(model_, data_, options_.driver, current_, &previous_, &before_, current_.input + h,
+                  factorised_at_current_ ? chord_ : options_.solver, options_.velocities, next_, iterations)) {
+        factorised_at_current_ = true;
+        note_extremes();
+        std::swap(before_, previous_);
+        std::swap(previous_, current_);
+        std::swap(current_, next_);
+        h *= 2.0;
+      } else {
+        factorised_at_current_ = false;
+        h *= 0.5;
+        if (std::abs(h) < options_.min_step) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  void derivatives_at(const Anchor& a, std::vector<double>& d) {
+    data_.q = a.q;
+    for (std::size_t o = 0; o < options_.outputs.size(); ++o)
+      d[o] = output_derivative(model_, data_, options_.outputs[o], a.dq);
+  }
+
+  // Extremes of outputs between current and next: a sign change of d(output)/d(input) since the
+  // last sample where it was clearly non-zero brackets an extreme; derivatives below kFlat (1 nm
+  // or 1 nrad per unit input) are round-off (a constant output, or an extreme on a sample).
+  void note_extremes() {
+    constexpr double kFlat = 1e-9;
+    derivatives_at(next_, derivative_);
+    for (std::size_t o = 0; o < derivative_.size(); ++o) {
+      const double d = derivative_[o];
+      if (std::abs(d) <= kFlat) continue;
+      if (std::abs(last_derivative_[o]) > kFlat && (last_derivative_[o] > 0.0) != (d > 0.0)) {
+        result_.extremes.push_back(locate_extreme(model_, data_, options_, static_cast<int>(o), last_significant_[o],
+                                                  last_derivative_[o], next_, d));
+        factorised_at_current_ = false;
+      }
+      last_derivative_[o] = d;
+      last_significant_[o] = next_;
+    }
+  }
+
+  const Model& model_;
+  Data& data_;
+  const SweepOptions& options_;
+  SweepResult& result_;
+  Anchor current_, previous_, before_, next_;
+  SolverOptions chord_;
+  bool factorised_at_current_ = true;
+  std::vector<double> last_derivative_, derivative_;  // output derivatives, for the extremes
+  std::vector<Anchor> last_significant_;
+};
+
+// Hands an anchor to the visitor through one reused sample (no allocation per position).
+void visit_anchor(const Anchor& a, int iterations, bool velocities, SweepSample& scratch, const SampleVisitor& visit) {
+  scratch.input = a.input;
+  scratch.q = a.q;
+  scratch.dq = a.dq;
+  scratch.iterations = iterations;
+  if (velocities) {
+    scratch.qd = a.qd;
+    scratch.qdd = a.qdd;
+  } else {
+    scratch.qd.resize(0);
+    scratch.qdd.resize(0);
+  }
+  visit(scratch);
+}
+
+}  // namespace
+
+void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result, const SampleVisitor& visit) {
   check_data(model, data);
   if (options.driver < 0 || options.driver >= static_cast<int>(model.drivers().size()))
     throw std::invalid_argument("sweep: driver index " + std::to_string(options.driver) + " out of range");
   if (!(options.step > 0.0)) throw std::invalid_argument("sweep: the step must be positive");
-  // The samples of `result` are overwritten in place (their vectors keep their storage), so a
-  // repeated sweep does not allocate per position.
-  std::size_t used = 0;
   result.dead_points.clear();
   result.extremes.clear();
   result.assembled = false;
@@ -156,110 +268,43 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
   result.message.clear();
   const double direction = options.end >= options.start ? 1.0 : -1.0;
   const double step = options.step * direction;
-  const long count = static_cast<long>(std::floor(std::abs(options.end - options.start) / options.step + 1e-9)) + 1;
+  const long count = sweep_sample_count(options);
 
-  PositionReport first = solve_at(model, data, options.driver, options.start, options.solver);
+  const PositionReport first = solve_at(model, data, options.driver, options.start, options.solver);
   if (!first.converged || first.singular) {
     result.message = first.message.empty() ? "singular Jacobian at the first input" : first.message;
-    result.samples.clear();
     return;
   }
   result.assembled = true;
-  Anchor current{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
-                 data.determinant_sign};
-  Anchor before = current, previous = current, next = current;
-  result.samples.reserve(static_cast<std::size_t>(std::min<long>(count, 1L << 20)));
-  auto record = [&](const Anchor& a, int iterations) {
-    if (used == result.samples.size()) result.samples.emplace_back();
-    SweepSample& s = result.samples[used++];
-    s.input = a.input;
-    s.q = a.q;
-    s.iterations = iterations;
-    if (options.velocities) {
-      s.qd = a.qd;
-      s.qdd = a.qdd;
-    } else {
-      s.qd.resize(0);
-      s.qdd.resize(0);
-    }
-  };
-  record(current, first.iterations);
-
-  // Continuation steps take their first Newton step with the factorisation of the position
-  // they start from (SolverOptions::reuse_factorization), valid while nothing else has
-  // factorised since (a rejected step or the location of an extreme).
-  SolverOptions chord = options.solver;
-  chord.reuse_factorization = true;
-  bool factorised_at_current = true;
-
-  // Output derivatives at the last sample, for the extremes.
-  std::vector<double> last_derivative(options.outputs.size(), 0.0), derivative = last_derivative;
-  auto derivatives_at = [&](const Anchor& a, std::vector<double>& d) {
-    data.q = a.q;
-    for (std::size_t o = 0; o < options.outputs.size(); ++o) d[o] = output_derivative(model, data, options.outputs[o], a.dq);
-  };
-  derivatives_at(current, last_derivative);
-  std::vector<Anchor> last_significant(options.outputs.size(), current);
-
+  SweepSample scratch;
+  Continuation run(model, data, options,
+                   result, Anchor{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
+                                  data.determinant_sign});
+  visit_anchor(run.current(), first.iterations, options.velocities, scratch, visit);
+  double last_visited = options.start;
   for (long k = 1; k < count; ++k) {
-    const double target = (k == count - 1 && std::abs(options.start + step * static_cast<double>(k) - options.end) < 1e-9 * options.step)
-                              ? options.end
-                              : options.start + step * static_cast<double>(k);
-    // Continuation with step halving: reach `target` from `current`.
-    double h = target - current.input;
+    const double planned = options.start + step * static_cast<double>(k);
+    const double target = k == count - 1 && std::abs(planned - options.end) < 1e-9 * options.step ? options.end : planned;
     int iterations = 0;
-    bool dead = false;
-    while (current.input != target) {
-      const double remaining = target - current.input;
-      if (std::abs(h) > std::abs(remaining)) h = remaining;
-      if (advance(model, data, options.driver, current, &previous, &before, current.input + h,
-                  factorised_at_current ? chord : options.solver, options.velocities, next, iterations)) {
-        factorised_at_current = true;
-        // Extremes of outputs between current and next: a sign change of d(output)/d(input)
-        // since the last sample where it was clearly non-zero brackets an extreme;
-        // derivatives below kFlat (1 nm or 1 nrad per unit input) are round-off (a constant
-        // output, or an extreme falling on a sample).
-        constexpr double kFlat = 1e-9;
-        derivatives_at(next, derivative);
-        for (std::size_t o = 0; o < derivative.size(); ++o) {
-          const double d = derivative[o];
-          if (std::abs(d) <= kFlat) continue;
-          if (std::abs(last_derivative[o]) > kFlat && (last_derivative[o] > 0.0) != (d > 0.0)) {
-            result.extremes.push_back(locate_extreme(model, data, options, static_cast<int>(o), last_significant[o],
-                                                     last_derivative[o], next, d));
-            factorised_at_current = false;
-          }
-          last_derivative[o] = d;
-          last_significant[o] = next;
-        }
-        std::swap(before, previous);
-        std::swap(previous, current);
-        std::swap(current, next);
-        h *= 2.0;
-      } else {
-        factorised_at_current = false;
-        h *= 0.5;
-        if (std::abs(h) < options.min_step) {
-          dead = true;
-          break;
-        }
-      }
-    }
-    if (dead) {
+    if (!run.reach(target, iterations)) {
       DeadPoint dp;
-      dp.input = current.input;
-      dp.q = current.q;
-      dp.description = "dead point: the driver cannot move the mechanism beyond this input (singular dependent Jacobian; "
-                       "toggle or limit position)";
+      dp.input = run.current().input;
+      dp.q = run.current().q;
+      dp.description = "dead point: the driver cannot move the mechanism beyond this input (singular dependent "
+                       "Jacobian; toggle or limit position)";
       result.dead_points.push_back(dp);
       result.message = "sweep stopped at a dead point";
-      if (result.samples[used - 1].input != current.input) record(current, iterations);
+      if (last_visited != run.current().input) visit_anchor(run.current(), iterations, options.velocities, scratch, visit);
       break;
     }
-    record(current, iterations);
+    visit_anchor(run.current(), iterations, options.velocities, scratch, visit);
+    last_visited = target;
   }
-  result.samples.resize(used);
   result.complete = result.dead_points.empty();
+}
+
+long sweep_sample_count(const SweepOptions& options) {
+  return static_cast<long>(std::floor(std::abs(options.end - options.start) / options.step + 1e-9)) + 1;
 }
 
 }  // namespace gearkit::kin

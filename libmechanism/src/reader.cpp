@@ -277,7 +277,7 @@ class Reader {
                                   : std::abs(range.end - range.start) / 100.0;
       if (!(range.step > 0.0) || range.start == range.end) fail(*r, "expected a range with start != end and a step > 0");
       if (std::abs(range.end - range.start) / range.step + 1 > io::limits::kSweepPositions)
-        fail(*r, fmt::format("expected at most {:g} positions in the range", io::limits::kSweepPositions));
+        fail(*r, fmt::format("expected at most {:.0f} positions in the range", io::limits::kSweepPositions));
       md.range = range;
     }
     d.finish();

@@ -47,18 +47,18 @@ TEST(Limits, KinContinuationAndSweepsAreBounded) {
   expect_quick_refusal(four_bar + " --at 1e9", "option '--at'");   // ran for ever
   expect_quick_refusal(four_bar + " --at 1e20", "option '--at'");  // internal error: vector::reserve
   expect_quick_refusal(four_bar + " --at 300000", "option '--at': expected a value within 100000 continuation steps");
-  expect_quick_refusal(four_bar + " --sweep 0:360:0.01", "option '--sweep': expected at most 10000 positions");
+  expect_quick_refusal(four_bar + " --sweep 0:360:0.00001", "option '--sweep': expected at most 10000000 positions");
   const auto ok = run_gearkit(four_bar + " --at 3600");
   EXPECT_EQ(ok.status, 0) << ok.err;  // ten turns from the drawing are within the limit
 
-  // A driver range in the file counts too; and positions times coordinates: a 100-loop chain
-  // (303 coordinates) swept in 0.25 deg steps would hold 1441 x 303 values per quantity.
-  const fs::path chain = write("chain.yaml", run_gearkit("kin --example chain:100").out);
-  expect_quick_refusal("kin " + shell_quote(chain.string()) + " --sweep 0:360:0.25",
-                       "expected at most 500000 positions times coordinates");
+  // A driver range in the file counts too; and positions times coordinates: a 1000-loop chain
+  // (6003 coordinates) swept in 0.01 deg steps would solve 36001 x 6003 coordinates.
+  const fs::path chain = write("chain.yaml", run_gearkit("kin --example chain:1000").out);
+  expect_quick_refusal("kin " + shell_quote(chain.string()) + " --sweep 0:360:0.01",
+                       "expected at most 100000000 positions times coordinates");
   std::string text = run_gearkit("kin --example chain:2").out;
-  text.replace(text.find("1 deg]"), 6, "0.001 deg]");
-  expect_quick_refusal("kin " + shell_quote(write("fine.yaml", text).string()), "expected at most 10000 positions");
+  text.replace(text.find("1 deg]"), 6, "0.00001 deg]");
+  expect_quick_refusal("kin " + shell_quote(write("fine.yaml", text).string()), "expected at most 10000000 positions");
 }
 
 TEST(Limits, TrainSynthesisSearchesAreBounded) {

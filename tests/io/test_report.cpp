@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 using namespace gearkit::io;
@@ -86,4 +89,33 @@ TEST(Report, NonFiniteResultsAreNamedInAWarning) {
   ASSERT_EQ(r.warnings.size(), 4u);  // "undercut on gear 1" and three named quantities
   EXPECT_EQ(r.warnings[1].rfind("non-finite result: 'ratio' is not a finite number", 0), 0u) << r.warnings[1];
   EXPECT_TRUE(non_finite_quantities(sample()).empty());  // "36.000" and words like "info" are fine
+}
+
+// fixed() takes a fast integer path where value * 10^digits is unambiguous and falls back to
+// std::to_chars near ties: either way the text must be the correctly rounded one, which fmt's
+// "{:.Nf}" gives (an independent implementation: Dragon4/Grisu with exact fallback).
+TEST(Report, FixedIsCorrectlyRoundedEverywhere) {
+  std::uint64_t state = 12345;
+  const auto next = [&state] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / static_cast<double>(1ULL << 53);
+  };
+  for (int i = 0; i < 200000; ++i) {
+    const double magnitude = std::pow(10.0, 12.0 * next() - 6.0);
+    const double v = (next() < 0.5 ? -1 : 1) * magnitude * next();
+    const int digits = i % 7;
+    std::string expected = fmt::format("{:.{}f}", v, digits);
+    if (expected.front() == '-' && expected.find_first_not_of("-0.") == std::string::npos) expected.erase(0, 1);
+    ASSERT_EQ(fixed(v, digits), expected) << v << " with " << digits << " digits";
+  }
+  // Exact binary ties round to even (0.125 is exact: 0.12), near-ties go the right way.
+  EXPECT_EQ(fixed(0.125, 2), "0.12");
+  EXPECT_EQ(fixed(0.375, 2), "0.38");
+  EXPECT_EQ(fixed(2.5, 0), "2");
+  EXPECT_EQ(fixed(1.005, 2), "1.00");  // 1.005 is 1.00499999999999989... in binary
+  EXPECT_EQ(fixed(-0.00001, 4), "0.0000");
+  EXPECT_EQ(fixed(-1.5, 4), "-1.5000");
+  EXPECT_EQ(fixed(1e20, 2), "100000000000000000000.00");
+  EXPECT_EQ(fixed(NAN, 3), "nan");
+  EXPECT_EQ(fixed(-INFINITY, 3), "-inf");
 }

@@ -19,6 +19,19 @@ TEST(Grashof, Classes) {
   EXPECT_EQ(grashof(0.10, 0.05, 0.10, 0.05).kind, GrashofClass::change_point);
   EXPECT_EQ(grashof(0.12, 0.08, 0.09, 0.10).kind, GrashofClass::triple_rocker);
   EXPECT_NE(grashof(0.10, 0.04, 0.12, 0.08).text.find("crank-rocker"), std::string::npos);
+  // The text speaks mm like the rest of the reports (issue 13 item 4): s + l = 40 + 120 mm.
+  EXPECT_NE(grashof(0.10, 0.04, 0.12, 0.08).text.find("s + l = 160 mm < p + q = 180 mm"), std::string::npos)
+      << grashof(0.10, 0.04, 0.12, 0.08).text;
+}
+
+// Links 10/20/20/100 mm: the 100 mm link is longer than 10 + 20 + 20 = 50 mm together, so no
+// configuration closes the loop; it is not a "triple rocker" (issue 13 item 3).
+TEST(Grashof, ALoopThatCannotCloseIsNamedSo) {
+  const GrashofResult g = grashof(0.100, 0.010, 0.020, 0.020);
+  EXPECT_EQ(g.kind, GrashofClass::cannot_assemble);
+  EXPECT_NE(g.text.find("l = 100 mm exceeds the sum of the other three s + p + q = 50 mm"), std::string::npos) << g.text;
+  // At equality the loop closes only flat: still assemblable (a degenerate change point).
+  EXPECT_NE(grashof(0.050, 0.010, 0.020, 0.020).kind, GrashofClass::cannot_assemble);
 }
 
 // Transmission angle by the law of cosines on triangle A B O4 (diagonal z = |A O4|):

@@ -59,6 +59,15 @@ class OutputSet {
   /// @throws InputError as add().
   std::ostream& stream(std::string_view option, const std::string& path);
 
+  /// Claims a destination whose content is not known yet (a plot of a sweep still running): it
+  /// is checked and refused now, as add() does, so that nothing is streamed before a bad
+  /// destination is found. fill() gives the content; an output never filled is dropped at
+  /// commit() and its destination stays as it was.
+  /// @throws InputError as add().
+  void reserve(std::string_view option, const std::string& path);
+  /// The content of the output reserved for `option`. @throws std::logic_error if none is.
+  void fill(std::string_view option, std::string_view content);
+
   /// Puts every output in place; afterwards the set is empty.
   /// @throws InputError when a write fails (disk full, device error); regular-file outputs are
   ///         then all left as they were unless the failure happens in the final renames.

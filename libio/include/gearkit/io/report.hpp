@@ -41,11 +41,16 @@ std::string render(const Report& report, Format format);
 /// 'Shafts'").
 std::vector<std::string> non_finite_quantities(const Report& report);
 
+/// The warnings naming non-finite quantities (at most eight by name, then a count).
+std::vector<std::string> non_finite_warnings(const std::vector<std::string>& names);
+
 /// Adds a warning naming each non-finite quantity (docs/cli.md: a non-finite result is never
 /// silent). emit() calls it on every report, so a command need not.
 void warn_non_finite(Report& report);
 
-/// Fixed-point formatting with `digits` decimals; "-0.000" prints as "0.000".
+/// Fixed-point formatting with `digits` decimals, correctly rounded; "-0.000" prints as "0.000".
 std::string fixed(double value, int digits);
+/// The same, appended to `out`.
+void append_fixed(std::string& out, double value, int digits);
 
 }  // namespace gearkit::io

@@ -12,16 +12,19 @@ enum class GrashofClass {
   double_rocker,      ///< Grashof, shortest link is the coupler
   change_point,       ///< s + l = p + q: passes through a flat (uncertainty) configuration
   triple_rocker,      ///< non-Grashof: no link turns fully
+  cannot_assemble,    ///< l > s + p + q: the longest link is longer than the three others together
 };
 
 struct GrashofResult {
   GrashofClass kind = GrashofClass::triple_rocker;
   double s = 0.0, l = 0.0, pq = 0.0;  ///< shortest, longest, sum of the other two [m]
-  std::string text;                   ///< e.g. "Grashof crank-rocker (s + l = 0.45 m < p + q = 0.5 m)"
+  std::string text;  ///< e.g. "Grashof crank-rocker (s + l = 120 mm < p + q = 200 mm)": lengths in mm,
+                     ///< as mechanism files and reports give them
 };
 
 /// Grashof class from the link lengths [m] (ground, input crank, coupler, output rocker).
-/// Lengths must be positive; the equality s + l = p + q is judged to 1e-9 relative.
+/// Lengths must be positive; the equality s + l = p + q is judged to 1e-9 relative. A loop whose
+/// longest link exceeds the sum of the other three can never close (cannot_assemble).
 GrashofResult grashof(double ground, double crank, double coupler, double rocker);
 
 /// Transmission angle [rad] in [0, pi/2]: the acute angle between the coupler (B - A) and the

@@ -4,6 +4,7 @@
 // (limit positions) located precisely.
 #include <gearkit/kin/output.hpp>
 #include <gearkit/kin/solve.hpp>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct SweepOptions {
 struct SweepSample {
   double input = 0.0;
   Eigen::VectorXd q, qd, qdd;
+  Eigen::VectorXd dq;  ///< input sensitivity dq/d(input) at the sample (velocity ratios)
   int iterations = 0;
 };
 
@@ -69,6 +71,20 @@ SweepResult sweep(const Model& model, Data& data, const SweepOptions& options);
 /// The same into `result`, whose samples are overwritten in place: sweeping the same model
 /// again (an optimiser, an animation) then reuses their storage instead of allocating.
 void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result);
+
+/// Receives each sample as the sweep reaches it, in sweep order. The sample (and its vectors)
+/// is reused for the next one: copy what must outlive the call. The visitor must not touch the
+/// sweep's Data (use a Data of its own to analyse the sample further).
+using SampleVisitor = std::function<void(const SweepSample&)>;
+
+/// The same sweep streamed: each sample goes to `visit` and none is kept (result.samples is
+/// left as it was), so memory does not grow with the number of samples; dead points, extremes
+/// and the outcome are in `result` as above.
+void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result, const SampleVisitor& visit);
+
+/// The number of samples the sweep plans: floor(|end - start| / step) + 1 (fewer if it stops at
+/// a dead point). Requires options.step > 0.
+long sweep_sample_count(const SweepOptions& options);
 
 /// Assembles at input `value` of driver `driver` (starting from data.q), then solves velocity
 /// and acceleration. @returns the position report; qd/qdd are valid only if it converged and
