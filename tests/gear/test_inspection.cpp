@@ -2,11 +2,15 @@
 #include <gearkit/gear/cylindrical_gear.hpp>
 #include <gearkit/gear/inspection.hpp>
 #include <gearkit/gear/measurement.hpp>
+#include <gearkit/gear/thickness_tolerance.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 namespace gg = gearkit::gear;
 
@@ -106,7 +110,10 @@ TEST(Inspection, PinLimitsAgreeWithTheLinearisedRule) {
   EXPECT_NEAR(gi.M_d_min - g.M_d, (gi.W_k_min - g.W_k) * per_span, 0.01 * std::fabs(gi.M_d_min - g.M_d));
   EXPECT_LT(gi.D_M_min, gi.D_M);
   EXPECT_GT(gi.D_M_max, gi.D_M);
-  EXPECT_NEAR(gi.b_min_span, gi.W_k_max * std::sin(g.beta_b), 1e-12);
+  // The face width the spans need: the largest span measured (here the nominal W_k, as both
+  // allowances are negative) times sin(beta_b).
+  EXPECT_NEAR(gi.b_min_span, std::max({g.W_k, gi.W_k_max, gi.W_k_min}) * std::sin(g.beta_b), 1e-12);
+  EXPECT_GT(g.W_k, gi.W_k_max);
 }
 
 TEST(Inspection, GivenAllowancesAndCentreDistance) {
@@ -216,4 +223,71 @@ TEST(Inspection, BadInputNamesTheField) {
   EXPECT_EQ(gg::default_centre_distance_it(7), 8);
   EXPECT_EQ(gg::default_centre_distance_it(10), 9);
   EXPECT_EQ(gg::default_centre_distance_it(11), 10);
+}
+
+// A thickness tolerance narrower than the runout term (DIN 3967: 0.72 F_r tan(alpha_n) off each
+// limit) leaves no acceptance band. Gear 1, class 7: F_rT = 33 um, term 8.65 um > 5 um, so the
+// measurement allowances cross: span and pin limits are both undefined (before, W_k_max < W_k_min
+// while M_d was silently re-sorted). Gear 2: F_rT = 37 um, term 9.70 um < 10 um: a band remains.
+TEST(Inspection, NoAcceptanceBandLeavesSpanAndPinsUndefinedAlike) {
+  const auto in = spur_20_40();
+  gg::InspectionInput ii = grade(7, 7);
+  ii.allowances = {gg::ThicknessAllowances{0.005, -0.005}, gg::ThicknessAllowances{0.0, -0.02}};
+  const auto r = gg::compute_inspection(in, gg::compute_gear_pair(in), ii);
+  const auto& g1 = r.gear[0];
+  EXPECT_NEAR(g1.measured.A_sne, 0.005 - 0.72 * 0.033 * kTan20, 1e-12);
+  EXPECT_FALSE(g1.acceptance_band);
+  for (double v : {g1.W_k_max, g1.W_k_min, g1.M_d_max, g1.M_d_min, g1.d_W_max, g1.d_W_min}) EXPECT_TRUE(std::isnan(v));
+  EXPECT_DOUBLE_EQ(g1.b_min_span, 0.0);  // still defined: a spur span needs no face width
+  const auto& g2 = r.gear[1];
+  EXPECT_TRUE(g2.acceptance_band);
+  EXPECT_GT(g2.W_k_max, g2.W_k_min);
+  EXPECT_GT(g2.M_d_max, g2.M_d_min);
+  int band_warnings = 0;
+  for (const auto& w : r.warnings) band_warnings += w.find("no acceptance band") != std::string::npos ? 1 : 0;
+  EXPECT_EQ(band_warnings, 1);
+}
+
+// ISO 1328-1:1995 has grades 0..12: grade 0 gets its tolerances and ISO/TR 10064-2 allowances
+// (b_r = IT6/1.26, thickness_tolerance.hpp); it was rejected.
+TEST(Inspection, Iso1328_1995GradeZero) {
+  const auto in = spur_20_40();
+  gg::InspectionInput ii = grade(0, 0);
+  ii.edition = gg::Iso1328Edition::iso1995;
+  const auto r = gg::compute_inspection(in, gg::compute_gear_pair(in), ii);
+  EXPECT_EQ(r.gear[0].tolerances->grade, 0);
+  EXPECT_NEAR(r.gear[0].b_r, gg::radial_infeed_tolerance(1, 60.0) / 1.26, 1e-12);
+  EXPECT_LT(r.gear[0].allowances.A_sni, r.gear[0].allowances.A_sne);
+  EXPECT_EQ(r.pair.centre_distance_field, "js6");
+}
+
+// One face-width warning per gear: the gear table warns when the nominal span does not fit; the
+// inspection only when its limits need more face width than that.
+TEST(Inspection, OneFaceWidthWarningForTheSpan) {
+  gg::GearPairInput in = spur_20_40();
+  in.helix_angle = 30.0 * kDeg;
+  in.face_width = 8.0;
+  const auto table = gg::compute_gear_pair(in);
+  auto count = [](const std::vector<std::string>& ws) {
+    int n = 0;
+    for (const auto& w : ws) n += w.find("too narrow") != std::string::npos ? 1 : 0;
+    return n;
+  };
+  ASSERT_EQ(count(table.warnings), 2);  // both gears' nominal spans need more than 8 mm
+  EXPECT_EQ(count(gg::compute_inspection(in, table, grade(7, 7)).warnings), 0);
+  // Thicker teeth (A_sne > 0) need more than the nominal span: a face width between both needs.
+  gg::InspectionInput thick = grade(7, 7);
+  thick.allowances = {gg::ThicknessAllowances{0.4, 0.3}, gg::ThicknessAllowances{0.4, 0.3}};
+  const auto probe = gg::compute_inspection(in, table, thick);
+  const double nominal_need = table.gear[0].W_k * std::sin(std::fabs(table.gear[0].beta_b));
+  ASSERT_GT(probe.gear[0].b_min_span, nominal_need + 0.05);
+  in.face_width = 0.5 * (nominal_need + probe.gear[0].b_min_span);
+  const auto wider = gg::compute_gear_pair(in);
+  const auto r = gg::compute_inspection(in, wider, thick);
+  bool gear1_inspection = false;
+  for (const auto& w : r.warnings) gear1_inspection |= w.rfind("gear 1: face width", 0) == 0;
+  bool gear1_table = false;
+  for (const auto& w : wider.warnings) gear1_table |= w.rfind("gear 1: face width", 0) == 0;
+  EXPECT_TRUE(gear1_inspection);
+  EXPECT_FALSE(gear1_table);
 }
