@@ -2,6 +2,10 @@
 // and the properties the formulas must have.
 #include <gearkit/gear/rating.hpp>
 
+#include <gearkit/gear/accuracy.hpp>
+#include <gearkit/gear/iso6336_load.hpp>
+#include <gearkit/gear/iso6336_root.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -273,11 +277,11 @@ TEST(RatingBadInput, NamesTheField) {
   expect_field(load, "spectrum");
   load = tr_example1_load();
   load.f_pb = std::nan("");
-  load.quality = 0;  // no grade, no f_pb: K_v cannot be computed
+  load.quality.reset();  // no grade, no f_pb: K_v cannot be computed
   expect_field(load, "f_pb");
   load = tr_example1_load();
   load.factors = gg::ImposedFactors();
-  load.quality = 0;
+  load.quality.reset();
   expect_field(load, "f_ma");
   auto flat = in;
   flat.face_width = 0.0;
@@ -321,4 +325,123 @@ TEST(RatingConventions, TipDiametersWithOrWithoutTipShortening) {
   EXPECT_NEAR(full.c_gamma_alpha, 17.46485, 0.01);
   EXPECT_LT(full.Z_epsilon, shortened.Z_epsilon);
   EXPECT_NEAR(full.sigma_H0, 1206.58, 0.3);
+}
+
+namespace {
+
+// The audit's deep-tooth pair: z = 40/120, m_n = 2 mm, beta = 35 deg, basic rack 1.3 / 1.55 / 0.2,
+// b = 40 mm, 200 N m at 1000 1/min, 42CrMo4 both, deviations given (no grade needed for K_v).
+gg::GearPairInput deep_tooth_pair() {
+  gg::GearPairInput in;
+  in.z1 = 40;
+  in.z2 = 120;
+  in.module = 2.0;
+  in.helix_angle = 35.0 * kDeg;
+  in.h_aP = 1.3;
+  in.h_fP = 1.55;
+  in.rho_fP = 0.2;
+  in.face_width = 40.0;
+  return in;
+}
+
+gg::RatingInput deep_tooth_load() {
+  gg::RatingInput r;
+  r.T_1 = 200.0;
+  r.n_1 = 1000.0;
+  r.material = {gg::material_by_name("42CrMo4"), gg::material_by_name("42CrMo4")};
+  r.f_pb = r.f_falpha = r.f_ma = 10.0;
+  return r;
+}
+
+}  // namespace
+
+// ISO 6336-3:2019 clause 10: Y_DT < 1 only for high precision (grade <= 4) and eps_alphan > 2.05.
+// Without a grade the precision is unknown: Y_DT = 1 (it was 0.774 here, S_F 29 % too high).
+TEST(RatingDeepTooth, NoGradeNoReduction) {
+  const auto in = deep_tooth_pair();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = deep_tooth_load();
+  const auto none = gg::rate_gear_pair(in, geo, load);
+  ASSERT_GT(gg::iso6336::virtual_contact_ratio(none.eps_alpha, geo.gear[0].beta_b), 2.05);
+  EXPECT_DOUBLE_EQ(none.gear[0].Y_DT, 1.0);
+  load.quality = 7;
+  EXPECT_DOUBLE_EQ(gg::rate_gear_pair(in, geo, load).gear[0].Y_DT, 1.0);
+  load.quality = 4;
+  const auto fine = gg::rate_gear_pair(in, geo, load);
+  EXPECT_LT(fine.gear[0].Y_DT, 1.0);
+  // The reduction is exactly Eq. 49-51 of the virtual contact ratio.
+  const double eps_an = gg::iso6336::virtual_contact_ratio(fine.eps_alpha, geo.gear[0].beta_b);
+  EXPECT_DOUBLE_EQ(fine.gear[0].Y_DT, eps_an > 2.5 ? 0.7 : -0.666 * eps_an + 2.366);
+  EXPECT_NEAR(fine.gear[0].sigma_F0 / none.gear[0].sigma_F0, fine.gear[0].Y_DT, 1e-12);
+}
+
+// The rating takes the deviations of the grade from the edition the grade belongs to: a 1995
+// grade gives exactly the rating with its ISO 1328-1:1995 tolerances given as deviations.
+TEST(RatingQuality, TheEditionOfTheGradeFeedsTheDeviations) {
+  const auto in = deep_tooth_pair();
+  const auto geo = gg::compute_gear_pair(in);
+  gg::RatingInput load = deep_tooth_load();
+  load.f_pb = load.f_falpha = load.f_ma = std::nan("");
+  load.n_1 = 3000.0;
+  load.quality = 6;
+  load.iso1328_edition = gg::Iso1328Edition::iso1995;
+  const auto p1995 = gg::rate_gear_pair(in, geo, load);
+  gg::RatingInput given = load;
+  given.quality.reset();
+  double f_pT = 0, f_falphaT = 0, f_HbetaT = 0;
+  for (int i = 0; i < 2; ++i) {
+    const auto t = gg::flank_tolerances({geo.gear[i].d, geo.gear[i].m_n, in.face_width, geo.gear[i].z, geo.gear[i].beta, 6,
+                                         gg::Iso1328Edition::iso1995});
+    f_pT = std::max(f_pT, t.f_pT);
+    f_falphaT = std::max(f_falphaT, t.f_falphaT);
+    f_HbetaT = std::max(f_HbetaT, t.f_HbetaT);
+  }
+  given.f_pb = f_pT * std::cos(geo.gear[0].alpha_t);
+  given.f_falpha = f_falphaT;
+  given.f_ma = given.f_Hbeta = f_HbetaT;
+  const auto p_given = gg::rate_gear_pair(in, geo, given);
+  EXPECT_DOUBLE_EQ(p1995.K_v, p_given.K_v);
+  EXPECT_DOUBLE_EQ(p1995.K_Hbeta, p_given.K_Hbeta);
+  EXPECT_DOUBLE_EQ(p1995.K_Halpha, p_given.K_Halpha);
+  load.iso1328_edition = gg::Iso1328Edition::iso2013;
+  EXPECT_NE(gg::rate_gear_pair(in, geo, load).K_v, p1995.K_v);  // the editions' tolerances differ here
+}
+
+TEST(RatingQuality, GradeRangeOfEachEdition) {
+  const auto in = deep_tooth_pair();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = deep_tooth_load();
+  load.quality = 0;
+  load.iso1328_edition = gg::Iso1328Edition::iso1995;
+  EXPECT_NO_THROW(gg::rate_gear_pair(in, geo, load));  // 1995: grades 0..12
+  load.quality = 12;
+  EXPECT_NO_THROW(gg::rate_gear_pair(in, geo, load));
+  for (int q : {0, 12}) {
+    load.quality = q;
+    load.iso1328_edition = gg::Iso1328Edition::iso2013;  // 2013: classes 1..11
+    try {
+      gg::rate_gear_pair(in, geo, load);
+      ADD_FAILURE() << q;
+    } catch (const gg::RatingError& e) {
+      EXPECT_EQ(e.field(), "quality");
+    }
+  }
+}
+
+// C_a by running-in for two materials is the mean of both gears' C_ay (ISO 6336-1:2019 6.5.9):
+// the rating without a tip relief equals the one with C_a = 0.5 (C_ay1 + C_ay2) given.
+TEST(RatingDynamicFactor, TipReliefByRunningInOfTwoMaterialsIsTheMean) {
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = tr_example1_load();
+  load.material[1] = gg::material_by_name("42CrMo4");
+  load.C_a = std::nan("");
+  load.n_1 = 3000.0;  // a K_v that depends on C_a
+  const auto running_in = gg::rate_gear_pair(in, geo, load);
+  const double C_ay1 = gg::iso6336::tip_relief_by_running_in(load.material[0].sigma_Hlim);
+  const double C_ay2 = gg::iso6336::tip_relief_by_running_in(load.material[1].sigma_Hlim);
+  load.C_a = 0.5 * (C_ay1 + C_ay2);
+  EXPECT_DOUBLE_EQ(running_in.K_v, gg::rate_gear_pair(in, geo, load).K_v);
+  load.C_a = std::max(C_ay1, C_ay2);
+  EXPECT_NE(running_in.K_v, gg::rate_gear_pair(in, geo, load).K_v);
 }
