@@ -4,6 +4,8 @@
 #include <gearkit/gear/measurement.hpp>
 #include <gearkit/gear/thickness_tolerance.hpp>
 
+#include "kisssoft_stage3.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -290,4 +292,58 @@ TEST(Inspection, OneFaceWidthWarningForTheSpan) {
   for (const auto& w : wider.warnings) gear1_table |= w.rfind("gear 1: face width", 0) == 0;
   EXPECT_TRUE(gear1_inspection);
   EXPECT_FALSE(gear1_table);
+}
+
+// KISSsoft 03/2017 report "stage_03" (kisssoft_stage3.hpp), section 6 "Measurements for tooth
+// thickness" and 7 "Gear accuracy": DIN 3967 cd25 on both gears, centre distance js6, ISO
+// 1328-1:1995 grade 6, pins/balls D_M = 28 / 25 mm. KISSsoft
+// takes no runout term off the span (A_W = A_sn cos alpha_n): here no grade is given to the
+// thickness system, as in the report. Its normal backlash is j_t cos(alpha_n) cos(beta) (DIN 3967),
+// gearkit's j_t cos(alpha_wt) cos(beta_b) (ISO 21771): the circumferential backlash is compared.
+TEST(Inspection, KisssoftStage3Report) {
+  gg::GearPairInput in = gearkit::testing::kisssoft_stage3_geometry();
+  in.pin_diameter1 = 28.0;
+  in.pin_diameter2 = 25.0;
+  const auto table = gg::compute_gear_pair(in);
+  gg::InspectionInput ii;
+  ii.din3967 = {gg::Din3967Designation{25, "cd"}, gg::Din3967Designation{25, "cd"}};
+  ii.centre_distance_it = 6;
+  const auto r = gg::compute_inspection(in, table, ii);
+  const double A_sne[2] = {-0.130, -0.240}, A_sni[2] = {-0.190, -0.340};
+  const int k[2] = {4, 13};
+  const double W_k[2] = {154.167, 542.490}, W_max[2] = {154.045, 542.264}, W_min[2] = {153.989, 542.171};
+  const double M_d[2] = {397.284, 1404.574}, M_max[2] = {397.035, 1403.997}, M_min[2] = {396.921, 1403.756};
+  for (int i = 0; i < 2; ++i) {
+    const auto& g = r.gear[i];
+    EXPECT_NEAR(g.allowances.A_sne, A_sne[i], 1e-12) << i;
+    EXPECT_NEAR(g.allowances.A_sni, A_sni[i], 1e-12) << i;
+    EXPECT_EQ(g.k, k[i]);
+    EXPECT_NEAR(table.gear[i].W_k, W_k[i], 0.0005) << i;
+    EXPECT_NEAR(g.W_k_max, W_max[i], 0.0006) << i;
+    EXPECT_NEAR(g.W_k_min, W_min[i], 0.0005) << i;
+    // Gear 2 (odd z, helical): the report's two-ball measure MdK (its pins "MdR" differ for odd z).
+    EXPECT_NEAR(table.gear[i].M_d, M_d[i], 0.0005) << i;
+    EXPECT_NEAR(g.M_d_max, M_max[i], 0.0005) << i;
+    EXPECT_NEAR(g.M_d_min, M_min[i], 0.0005) << i;
+  }
+  EXPECT_DOUBLE_EQ(r.pair.A_ae, 0.028);  // js6 of 861 mm: IT6 = 56 um
+  EXPECT_NEAR(r.pair.range.max.j_t, 0.571, 0.0005);
+  EXPECT_NEAR(r.pair.range.min.j_t, 0.359, 0.0005);
+  // ISO 1328-1:1995 grade 6, both gears (section 7): f_pt, F_p, F_alpha, f_falpha, f_Halpha,
+  // F_beta, f_fbeta = f_Hbeta, F_r (ISO 1328-2:1997 Annex B).
+  const double f_pt[2] = {14, 17}, F_p[2] = {50, 78}, F_a[2] = {23, 28}, f_fa[2] = {18, 22}, f_Ha[2] = {15, 18};
+  const double F_b[2] = {25, 27}, f_b[2] = {18, 19}, F_r[2] = {40, 63};
+  for (int i = 0; i < 2; ++i) {
+    const auto t = gg::flank_tolerances({table.gear[i].d, 14.0, 360.0, table.gear[i].z, table.gear[i].beta, 6,
+                                         gg::Iso1328Edition::iso1995});
+    EXPECT_DOUBLE_EQ(t.f_pT, f_pt[i]) << i;
+    EXPECT_DOUBLE_EQ(t.F_pT, F_p[i]) << i;
+    EXPECT_DOUBLE_EQ(t.F_alphaT, F_a[i]) << i;
+    EXPECT_DOUBLE_EQ(t.f_falphaT, f_fa[i]) << i;
+    EXPECT_DOUBLE_EQ(t.f_HalphaT, f_Ha[i]) << i;
+    EXPECT_DOUBLE_EQ(t.F_betaT, F_b[i]) << i;
+    EXPECT_DOUBLE_EQ(t.f_fbetaT, f_b[i]) << i;
+    EXPECT_DOUBLE_EQ(t.f_HbetaT, f_b[i]) << i;
+    EXPECT_DOUBLE_EQ(t.F_rT, F_r[i]) << i;
+  }
 }
