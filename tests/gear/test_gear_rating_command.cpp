@@ -236,3 +236,16 @@ TEST(GearRatingCli, NegativeLifeOfASpectrumNamesTheLifeKey) {
   const std::string file = write("negative_life.yaml", s);
   expect_error(run("'" + file + "'"), "negative_life.yaml:" + std::to_string(line) + ":9:");
 }
+
+// A pair file gives the grade's edition as `iso1328_edition:`; a grade outside it is reported at
+// the `quality:` key.
+TEST(GearRatingCli, PairFileGradeAndItsEdition) {
+  const std::string base = "z1: 20\nz2: 60\nmodule: 3\nface_width: 30\nmaterials: {gear1: 42CrMo4, gear2: 42CrMo4}\n";
+  const std::string load = "load: {torque1: 100, speed1: 1000}\n";
+  const std::string ok = write("grade0_1995.yaml", base + "quality: 0\niso1328_edition: 1995\n" + load);
+  const CliRun r = run("'" + ok + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["rating"]["iso1328_edition"], "ISO 1328-1:1995");
+  const std::string bad = write("grade0_2013.yaml", base + "quality: 0\n" + load);
+  expect_error(run("'" + bad + "'"), "grade0_2013.yaml:6:10:");
+}
