@@ -125,7 +125,7 @@ double agma_J_from_iso(const Mesh& m, const RatingInput& in, int i) {
 PairRating rate_agma(const Mesh& m, const RatingInput& in) {
   PairRating r = operating_point(RatingMethod::agma, m, in, in.T_1, in.n_1);
   const auto& f = in.factors;
-  const int Q_v = in.Q_v > 0 ? in.Q_v : in.quality > 0 ? 17 - in.quality : 0;
+  const int Q_v = in.Q_v > 0 ? in.Q_v : in.quality ? 17 - *in.quality : 0;
   if (Q_v == 0 && !f.has(Factor::K_v)) {
     throw RatingError("Q_v", "the AGMA dynamic factor needs the quality number Q_v (or the ISO grade, or an imposed K_v)");
   }

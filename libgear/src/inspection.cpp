@@ -201,28 +201,47 @@ void pin_range(const GearResult& g, const ToothData& thick, const ToothData& thi
   }
 }
 
+// The span of `thick` and `thin` teeth over k teeth and where its anvils touch; NaN for a ring.
+struct Spans {
+  double W_thick = kNaN, W_thin = kNaN, d_thick = kNaN, d_thin = kNaN;
+};
+
+Spans spans(const GearResult& g, const ToothData& thick, const ToothData& thin) {
+  Spans s;
+  if (g.k_span <= 0) return s;
+  s.W_thick = span_measurement(thick, g.k_span);
+  s.W_thin = span_measurement(thin, g.k_span);
+  s.d_thick = span_contact_diameter(thick, s.W_thick);
+  s.d_thin = span_contact_diameter(thin, s.W_thin);
+  return s;
+}
+
+// Span and pin limits from the measurement allowances. Both take the thickest accepted tooth as one
+// limit and the thinnest as the other (never re-sorted by value); without an acceptance band both
+// are left undefined alike.
 void measurements(const GearResult& g, int Z, GearInspection& gi) {
   gi.measured = measurement_allowances(gi.allowances, 1e-3 * gi.F_r, g.alpha_n);
+  gi.acceptance_band = gi.measured.A_sne >= gi.measured.A_sni;
   const ToothData thick = tooth(g, Z, gi.measured.A_sne);
   const ToothData thin = tooth(g, Z, gi.measured.A_sni);
   gi.k = g.k_span;
-  if (g.k_span > 0) {
-    gi.W_k_max = span_measurement(thick, g.k_span);
-    gi.W_k_min = span_measurement(thin, g.k_span);
-    gi.d_W_max = span_contact_diameter(thick, gi.W_k_max);
-    gi.d_W_min = span_contact_diameter(thin, gi.W_k_min);
-    gi.b_min_span = gi.W_k_max * std::sin(std::fabs(g.beta_b));
-  } else {
-    gi.W_k_max = gi.W_k_min = gi.d_W_max = gi.d_W_min = gi.b_min_span = kNaN;
-  }
+  const Spans s = spans(g, thick, thin);
+  gi.b_min_span = g.k_span > 0 ? std::max({g.W_k, s.W_thick, s.W_thin}) * std::sin(std::fabs(g.beta_b)) : kNaN;
   gi.D_M = g.pin_diameter;
+  double M_thick = kNaN, M_thin = kNaN;
   try {
-    const double M_thick = dimension_over_pins(thick, gi.D_M), M_thin = dimension_over_pins(thin, gi.D_M);
-    gi.M_d_max = std::max(M_thick, M_thin);  // a ring's pins move inwards as its teeth thicken
-    gi.M_d_min = std::min(M_thick, M_thin);
+    M_thick = dimension_over_pins(thick, gi.D_M);
+    M_thin = dimension_over_pins(thin, gi.D_M);
   } catch (const std::domain_error&) {
-    gi.M_d_max = gi.M_d_min = kNaN;
+    M_thick = M_thin = kNaN;
   }
+  const bool band = gi.acceptance_band;
+  gi.W_k_max = band ? s.W_thick : kNaN;
+  gi.W_k_min = band ? s.W_thin : kNaN;
+  gi.d_W_max = band ? s.d_thick : kNaN;
+  gi.d_W_min = band ? s.d_thin : kNaN;
+  gi.M_d_max = band ? (g.internal ? M_thin : M_thick) : kNaN;
+  gi.M_d_min = band ? (g.internal ? M_thick : M_thin) : kNaN;
   pin_range(g, thick, thin, gi);
 }
 
@@ -240,9 +259,9 @@ void scope_warnings(const GearInspection& gi, int i, std::vector<std::string>& w
 
 void span_warnings(const GearPairInput& in, const GearResult& g, const GearInspection& gi, int i,
                    std::vector<std::string>& w) {
-  if (!(gi.measured.A_sne >= gi.measured.A_sni)) {
+  if (!gi.acceptance_band) {
     w.push_back(fmt::format("gear {}: the thickness tolerance {:.4f} mm is narrower than the runout allows "
-                            "(1.44 F_r tan alpha_n): no acceptance band for span or pins", i + 1, gi.T_sn));
+                            "(1.44 F_r tan alpha_n): no acceptance band, no span or pin limits", i + 1, gi.T_sn));
   }
   if (gi.k == 0) return;
   const double d_low = std::isfinite(g.d_Ff) ? g.d_Ff : g.d_b;
@@ -250,9 +269,12 @@ void span_warnings(const GearPairInput& in, const GearResult& g, const GearInspe
     w.push_back(fmt::format("gear {}: the span anvils touch at d = {:.3f}..{:.3f} mm, outside the usable flank "
                             "{:.3f}..{:.3f} mm: choose another k", i + 1, gi.d_W_min, gi.d_W_max, d_low, g.d_a));
   }
-  if (in.face_width > 0.0 && in.face_width <= gi.b_min_span) {
-    w.push_back(fmt::format("gear {}: face width {:.3f} mm too narrow for the span W_k,max (needs > {:.3f} mm)", i + 1,
-                            in.face_width, gi.b_min_span));
+  // The gear table already warns when the nominal span does not fit (gear_pair.hpp): one warning
+  // per gear, this one only when the span limits need more face width than the nominal span.
+  const bool nominal_warned = in.face_width > 0.0 && in.face_width <= g.W_k * std::sin(std::fabs(g.beta_b));
+  if (in.face_width > 0.0 && in.face_width <= gi.b_min_span && !nominal_warned) {
+    w.push_back(fmt::format("gear {}: face width {:.3f} mm too narrow for the span limits over {} teeth (needs > {:.3f} mm)",
+                            i + 1, in.face_width, gi.k, gi.b_min_span));
   }
 }
 

@@ -89,6 +89,10 @@ double tip_relief_by_running_in(double sigma_Hlim) {
   return t * t / 18.0 + 1.5;
 }
 
+double mesh_tip_relief_by_running_in(double sigma_Hlim1, double sigma_Hlim2) {
+  return 0.5 * (tip_relief_by_running_in(sigma_Hlim1) + tip_relief_by_running_in(sigma_Hlim2));
+}
+
 DynamicCoefficients dynamic_coefficients(double eps_gamma) {
   DynamicCoefficients C{};
   C.C_v1 = 0.32;

@@ -155,8 +155,8 @@ double rim_thickness_factor(double s_R, double h_t, double m_n, bool internal) {
   return 1.6 * std::log(2.242 * h_t / std::max(s_R, 0.5 * h_t));
 }
 
-double deep_tooth_factor(double eps_alpha_n, int iso_grade) {
-  if (eps_alpha_n <= 2.05 || iso_grade > 4) return 1.0;
+double deep_tooth_factor(double eps_alpha_n, std::optional<int> iso_grade) {
+  if (!iso_grade || *iso_grade > 4 || eps_alpha_n <= 2.05) return 1.0;
   if (eps_alpha_n <= 2.5) return -0.666 * eps_alpha_n + 2.366;
   return 0.7;
 }

@@ -91,9 +91,9 @@ void require(bool ok, const char* field, Message message) {
 }
 
 void require_deviation(double value, const char* field, const char* what) {
-  require(std::isfinite(value) && value >= 0.0, field, [&] { return fmt::format("the {} needs {} (um, >= 0); give it, the ISO 1328 grade (--quality) or impose "
-                      "the factor",
-                      what, field); });
+  require(std::isfinite(value) && value >= 0.0, field, [&] {
+    return fmt::format("the {} needs {} (um, >= 0): give it or an ISO 1328 accuracy grade, or impose the factor", what, field);
+  });
 }
 
 // K_v, method B (ISO 6336-1:2019 6.5.9).
@@ -124,8 +124,7 @@ void dynamic_factor(const Mesh& m, const RatingInput& in, PairRating& r) {
   };
   r.y_alpha = 0.5 * (y(in.f_pb, 0) + y(in.f_pb, 1));
   const double y_f = 0.5 * (y(in.f_falpha, 0) + y(in.f_falpha, 1));
-  const double C_a = std::isnan(in.C_a) ? std::max(iso::tip_relief_by_running_in(in.material[0].sigma_Hlim),
-                                                   iso::tip_relief_by_running_in(in.material[1].sigma_Hlim))
+  const double C_a = std::isnan(in.C_a) ? iso::mesh_tip_relief_by_running_in(in.material[0].sigma_Hlim, in.material[1].sigma_Hlim)
                                         : in.C_a;
   const auto B = iso::deviation_terms(r.c_prime, in.f_pb - r.y_alpha, in.f_falpha - y_f, C_a, F_per_b);
   r.K_v = iso::dynamic_factor(r.N, r.N_S, iso::dynamic_coefficients(m.eps_gamma), B);
@@ -192,11 +191,11 @@ void pair_contact_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
   r.Z_beta = detail::imposed_or(f, Factor::Z_beta, iso::helix_angle_factor_H(m.beta));
 }
 
-// Deviations not given, from the ISO 1328-1:2013 tolerances of the accuracy grade (accuracy.hpp),
-// the larger of both gears: the mesh sees the worse one.
+// Deviations not given, from the tolerances of the accuracy grade in its ISO 1328-1 edition
+// (accuracy.hpp), the larger of both gears: the mesh sees the worse one.
 void deviations_of_quality(const Mesh& m, RatingInput& in) {
   FlankTolerances t[2];
-  for (int i = 0; i < 2; ++i) t[i] = flank_tolerances({m.d[i], m.m_n, m.b, m.z[i], m.beta, in.quality, Iso1328Edition::iso2013});
+  for (int i = 0; i < 2; ++i) t[i] = flank_tolerances({m.d[i], m.m_n, m.b, m.z[i], m.beta, *in.quality, in.iso1328_edition});
   auto larger = [&](double FlankTolerances::*f) { return std::max(t[0].*f, t[1].*f); };
   if (std::isnan(in.f_pb)) in.f_pb = larger(&FlankTolerances::f_pT) * std::cos(m.alpha_t);
   if (std::isnan(in.f_falpha)) in.f_falpha = larger(&FlankTolerances::f_falphaT);
@@ -211,7 +210,10 @@ void validate(const RatingInput& in) {
   require(std::isfinite(in.n_1) && in.n_1 > 0.0, "n_1", [&] { return fmt::format("expected a speed > 0 1/min, found {}", in.n_1); });
   require(std::isfinite(in.K_A) && in.K_A >= 1.0, "K_A", [&] { return fmt::format("expected an application factor >= 1, found {}", in.K_A); });
   require(std::isfinite(in.K_gamma) && in.K_gamma >= 1.0, "K_gamma", [&] { return fmt::format("expected K_gamma >= 1, found {}", in.K_gamma); });
-  require(in.quality >= 0 && in.quality <= 11, "quality", [&] { return fmt::format("expected an ISO 1328 grade 1..11, found {}", in.quality); });
+  require(!in.quality || (*in.quality >= min_grade(in.iso1328_edition) && *in.quality <= max_grade(in.iso1328_edition)), "quality", [&] {
+    return fmt::format("expected an {} grade {}..{}, found {}", to_string(in.iso1328_edition), min_grade(in.iso1328_edition),
+                       max_grade(in.iso1328_edition), *in.quality);
+  });
   require(std::isfinite(in.life_h) && in.life_h > 0.0, "life_h", [&] { return fmt::format("expected a life > 0 h, found {}", in.life_h); });
   require(std::isfinite(in.nu_40) && in.nu_40 > 0.0, "nu_40", [&] { return fmt::format("expected a viscosity > 0 mm^2/s, found {}", in.nu_40); });
   require(std::isfinite(in.S_Hmin) && in.S_Hmin > 0.0, "S_Hmin", [&] { return fmt::format("expected S_Hmin > 0, found {}", in.S_Hmin); });
@@ -280,7 +282,7 @@ PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairRes
   require(geometry_input.face_width > 0.0, "face_width", [&] { return "the rating needs a face width b > 0 mm"; });
   const Mesh m = detail::mesh_of(geometry_input, geometry);
   PairRating r;
-  if (in.method == RatingMethod::iso6336 && in.quality > 0) {
+  if (in.method == RatingMethod::iso6336 && in.quality) {
     RatingInput with_tolerances = in;
     deviations_of_quality(m, with_tolerances);
     r = detail::rate_iso6336(m, with_tolerances);

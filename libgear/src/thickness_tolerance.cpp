@@ -16,9 +16,11 @@ double recommended_min_backlash(double a, double m_n) {
 double radial_infeed_tolerance(int grade, double d) {
   // Odd grades are whole IT grades (5: IT8, 7: IT9, 9: IT10), even grades 1.26 = sqrt(1.6) times
   // the IT grade below (4: 1.26 IT7, 6: 1.26 IT8, 8: 1.26 IT9): one IT grade every two grades.
-  if (grade < 1 || grade > 12) {
-    throw std::domain_error(fmt::format("radial infeed tolerance: defined for accuracy grades 1..12, found {}", grade));
+  if (grade < 0 || grade > 12) {
+    throw std::domain_error(fmt::format("radial infeed tolerance: defined for accuracy grades 0..12, found {}", grade));
   }
+  // Grade 0 (ISO 1328-1:1995) continues the rule downwards: one 1.26 step finer than grade 1 (IT6).
+  if (grade == 0) return standard_tolerance(6, std::fabs(d)) / 1.26;
   if (grade % 2 != 0) return standard_tolerance((grade + 11) / 2, std::fabs(d));
   return 1.26 * standard_tolerance(grade / 2 + 5, std::fabs(d));
 }

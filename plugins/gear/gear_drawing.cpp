@@ -27,12 +27,14 @@ std::string helix(double beta) {
 
 std::string span(const gg::GearResult& g, const gg::GearInspection* gi) {
   if (g.k_span <= 0 || !std::isfinite(g.W_k)) return "-";
+  if (gi && !gi->acceptance_band) return fmt::format("k = {}: no acceptance band", g.k_span);
   if (gi && std::isfinite(gi->W_k_max)) return fmt::format("k = {}: {} / {}", g.k_span, mm(gi->W_k_max), mm(gi->W_k_min));
   return fmt::format("k = {}: {}", g.k_span, mm(g.A_sn != 0.0 ? g.W_k_actual : g.W_k));
 }
 
 std::string pins(const gg::GearResult& g, const gg::GearInspection* gi) {
   if (!std::isfinite(g.M_d)) return "-";
+  if (gi && !gi->acceptance_band) return fmt::format("D_M {}: no acceptance band", mm(gi->D_M));
   if (gi && std::isfinite(gi->M_d_max)) return fmt::format("D_M {}: {} / {}", mm(gi->D_M), mm(gi->M_d_max), mm(gi->M_d_min));
   return fmt::format("D_M {}: {}", mm(g.pin_diameter), mm(g.A_sn != 0.0 ? g.M_d_actual : g.M_d));
 }

@@ -1,5 +1,6 @@
 #include "gear_pair_file.hpp"
 
+#include "gear_rating_yaml.hpp"
 #include "gear_rating_options.hpp"
 
 #include <gearkit/io/yaml_model.hpp>
@@ -63,37 +64,11 @@ void read_geometry(MapReader& r, PairFile& f) {
   f.marks["A_sn2"] = r.mark("allowance2");
 }
 
-gg::Material read_material(const YAML::Node& node, const std::string& file, const char* what) {
-  if (node.IsScalar()) {
-    try {
-      return material_named(io::scalar_text(node, file, what));
-    } catch (const std::invalid_argument& e) {
-      io::fail_at(io::mark_of(node, file), e.what());
-    }
-  }
-  MapReader m(node, file, what);
-  gg::Material mat;
-  if (m.has("class")) {
-    const std::string spec = fmt::format("{}:{}:{}", m.string("class"), m.choice("grade", {"ML", "MQ", "ME"}, "MQ"), m.number("hardness"));
-    try {
-      mat = material_named(spec);
-    } catch (const std::invalid_argument& e) {
-      io::fail_at(m.mark("class"), e.what());
-    }
-  }
-  mat.name = m.optional_string("name").value_or(mat.name.empty() ? std::string("user-defined") : mat.name);
-  mat.sigma_Hlim = m.quantity_or("sigma_Hlim", Quantity::pressure, "MPa", mat.sigma_Hlim * 1e6) / 1e6;
-  mat.sigma_Flim = m.quantity_or("sigma_Flim", Quantity::pressure, "MPa", mat.sigma_Flim * 1e6) / 1e6;
-  mat.E = m.quantity_or("E", Quantity::pressure, "MPa", mat.E * 1e6) / 1e6;
-  mat.nu = m.optional_number("nu").value_or(mat.nu);
-  mat.HB = m.optional_number("HB").value_or(mat.HB);
-  try {
-    gg::validate(mat);
-  } catch (const std::invalid_argument& e) {
-    io::fail_at(m.mark(), e.what());
-  }
-  m.finish();
-  return mat;
+// The required life, checked where it is written: the spectrum's shares are fractions of it.
+double read_life(MapReader& load, double default_h) {
+  const double life_h = load.quantity_or("life", Quantity::time, "h", default_h * 3600.0) / 3600.0;
+  if (!(std::isfinite(life_h) && life_h > 0.0)) io::fail_at(load.mark("life"), fmt::format("expected a life > 0 h, found {:g} h", life_h));
+  return life_h;
 }
 
 void read_spectrum(MapReader& load, gg::RatingInput& r) {
@@ -132,7 +107,7 @@ void read_load(MapReader& load, gg::RatingInput& r, PairFile& f) {
   r.T_1 = load.has("torque1") ? load.quantity("torque1", Quantity::torque, "N*m")
                               : load.quantity("power", Quantity::power, "kW") / (r.n_1 / kRpm);
   r.K_A = load.optional_number("application_factor").value_or(1.0);
-  r.life_h = load.quantity_or("life", Quantity::time, "h", r.life_h * 3600.0) / 3600.0;
+  r.life_h = read_life(load, r.life_h);
   f.marks["T_1"] = load.mark(load.has("torque1") ? "torque1" : "power");
   f.marks["n_1"] = load.mark("speed1");
   f.marks["K_A"] = load.mark("application_factor");
@@ -143,7 +118,7 @@ void read_load(MapReader& load, gg::RatingInput& r, PairFile& f) {
 }
 
 void read_rating_details(MapReader& r, gg::RatingInput& in, PairFile& f) {
-  if (auto q = r.optional_integer("quality")) in.quality = static_cast<int>(*q);
+  read_accuracy(r, in);
   f.marks["quality"] = r.mark("quality");
   in.nu_40 = r.optional_number("oil_viscosity").value_or(in.nu_40);
   if (r.has("flank_roughness") && r.has("flank_rz")) io::fail_at(r.mark("flank_rz"), "give flank_roughness (R_a) or flank_rz, not both");
@@ -199,7 +174,7 @@ PairFile read_pair_file(const std::string& path) {
     materials.finish();
     read_rating_details(r, in, f);
     MapReader lr(*load, doc.file, "load");
-    in.life_h = lr.quantity_or("life", Quantity::time, "h", in.life_h * 3600.0) / 3600.0;  // before the spectrum shares
+    in.life_h = read_life(lr, in.life_h);  // before the spectrum shares
     read_load(lr, in, f);
     f.rating = in;
   }

@@ -1,5 +1,7 @@
 #include "gear_rating_options.hpp"
 
+#include "gear_tolerance_options.hpp"
+
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/quantity.hpp>
 
@@ -97,24 +99,12 @@ void read_materials(const io::po::variables_map& vm, gg::RatingInput& r) {
 }
 
 void read_quality_and_deviations(const io::po::variables_map& vm, gg::RatingInput& r) {
-  if (given(vm, "quality")) {
-    // "6" for both gears, or "6,7": the mesh is rated with the coarser grade.
-    const std::string s = text_of(vm, "quality");
-    int worst = 0;
-    std::size_t start = 0;
-    while (start <= s.size()) {
-      const std::size_t comma = s.find(',', start);
-      const std::string part = s.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-      int v = 0;
-      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
-      if (part.empty() || ec != std::errc() || end != part.data() + part.size() || v < 1 || v > 11) {
-        fail("quality", fmt::format("expected an ISO 1328 grade 1..11, found '{}'", s.substr(0, 60)));
-      }
-      worst = std::max(worst, v);
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-    r.quality = worst;
+  // One reader for the grade of the tolerances and of the rating (the edition decides the range);
+  // "6,7": the mesh is rated with the coarser grade.
+  const auto grades = read_quality(vm);
+  if (grades[0]) {
+    r.quality = std::max(*grades[0], grades[1].value_or(*grades[0]));
+    r.iso1328_edition = read_iso1328_edition(vm);
   }
   const std::pair<const char*, double gg::RatingInput::*> deviations[] = {
       {"f-pb", &gg::RatingInput::f_pb}, {"f-falpha", &gg::RatingInput::f_falpha}, {"F-betax", &gg::RatingInput::F_betax},
@@ -222,7 +212,7 @@ void add_rating_options(io::po::options_description& desc) {
       ("factor", po::value<std::vector<std::string>>()->composing()->value_name("NAME=VALUE"),
        "impose a factor (K_v, K_Hbeta, Z_NT1, Y_F, J1, ...), repeatable");
   if (!desc.find_nothrow("quality", false)) {
-    desc.add_options()("quality", text()->value_name("GRADE[,GRADE]"), "ISO 1328-1 flank tolerance class 1..11 (both gears, or gear 1,gear 2)");
+    desc.add_options()("quality", text()->value_name("GRADE[,GRADE]"), "ISO 1328-1:2013 flank tolerance class 1..11 (both gears, or gear 1,gear 2)");
   }
 }
 

@@ -153,7 +153,9 @@ nlohmann::json rating_json(const gg::RatingInput& in, const gg::PairRating& r) {
   nlohmann::json j = {{"method", gg::to_string(r.method)}, {"T_1_Nm", r.T_1}, {"n_1_rpm", r.n_1}, {"F_t_N", r.F_t},
                       {"v_m_s", r.v}, {"factors", factors}, {"Z_H", r.Z_H}, {"Z_E", r.Z_E}, {"Z_epsilon", r.Z_epsilon},
                       {"Z_beta", r.Z_beta}, {"sigma_H0_MPa", r.sigma_H0}, {"S_Hmin", in.S_Hmin}, {"S_Fmin", in.S_Fmin},
-                      {"materials", {in.material[0].name, in.material[1].name}}};
+                      {"materials", {in.material[0].name, in.material[1].name}},
+                      {"iso1328_grade", in.quality ? nlohmann::json(*in.quality) : nlohmann::json(nullptr)},
+                      {"iso1328_edition", gg::to_string(in.iso1328_edition)}};
   for (const auto& [k, v] : std::initializer_list<std::pair<const char*, double>>{
            {"c_th", r.c_th}, {"c_prime", r.c_prime}, {"c_gamma_alpha", r.c_gamma_alpha}, {"c_gamma_beta", r.c_gamma_beta},
            {"n_E1_rpm", r.n_E1}, {"N", r.N}, {"F_betax_um", r.F_betax}, {"F_betay_um", r.F_betay}, {"T_eq_Nm", r.T_eq}}) {
@@ -176,6 +178,11 @@ void add_rating_report(io::Report& report, const gg::RatingInput& in, const gg::
                                      "required S_Hmin = {:g}, S_Fmin = {:g}.",
                                      in.material[0].name, in.material[0].sigma_Hlim, in.material[0].sigma_Flim,
                                      in.material[1].name, in.material[1].sigma_Hlim, in.material[1].sigma_Flim, in.S_Hmin, in.S_Fmin));
+  if (r.method == gg::RatingMethod::iso6336) {
+    report.notes.push_back(in.quality ? fmt::format("Accuracy: {} grade {} (deviations not given from its tolerances).",
+                                                    gg::to_string(in.iso1328_edition), *in.quality)
+                                      : std::string("Accuracy: no ISO 1328 grade given (deviations as given; deep tooth factor Y_DT = 1)."));
+  }
   for (const auto& w : r.warnings) report.warnings.push_back(w);
   report.json["rating"] = rating_json(in, r);
 }

@@ -61,7 +61,7 @@ gg::SizingInput read_sizing(const io::po::variables_map& vm) {
   if (!vm.count("ratio")) fail("ratio", "is required: the gear ratio z2/z1");
   if (!rating_requested(vm)) fail("torque1", "the sizing needs the load: --torque1 or --power (with --speed1)");
   s.load = read_rating_options(vm);
-  if (s.load.quality == 0 && std::isnan(s.load.f_pb)) s.load.quality = 6;
+  if (!s.load.quality && std::isnan(s.load.f_pb)) s.load.quality = 6;
   s.ratio = number("ratio", vm["ratio"].as<std::string>());
   auto opt_number = [&](const char* key, double& field) {
     if (vm.count(key)) field = number(key, vm[key].as<std::string>());
@@ -100,8 +100,10 @@ io::Report sizing_report(const gg::SizingInput& in, const gg::SizingResult& r) {
   }
   report.tables.push_back(std::move(t));
   report.notes.push_back(fmt::format("{} combinations of module, z1 and V-0 shift tried, {} ratings; S_Hmin = {:g}, S_Fmin = {:g}; "
-                                     "ISO 1328 grade {}; candidates with undercut, interference or a contact ratio below 1 are left out.",
-                                     r.combinations, r.evaluated, in.load.S_Hmin, in.load.S_Fmin, in.load.quality));
+                                     "{}; candidates with undercut, interference or a contact ratio below 1 are left out.",
+                                     r.combinations, r.evaluated, in.load.S_Hmin, in.load.S_Fmin,
+                                     in.load.quality ? fmt::format("{} grade {}", gg::to_string(in.load.iso1328_edition), *in.load.quality)
+                                                     : std::string("deviations as given")));
   if (r.best.empty()) report.warnings.push_back("no candidate meets the required safety factors: allow larger modules, wider faces or a stronger material");
   report.json["sizing"] = {{"candidates", list}, {"combinations", r.combinations}, {"ratings", r.evaluated}};
   return report;

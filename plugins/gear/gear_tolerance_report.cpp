@@ -119,6 +119,7 @@ void gear_json(nlohmann::json& j, const gg::GearInspection& g) {
   j["A_sni_mm"] = g.allowances.A_sni;
   j["T_sn_mm"] = g.T_sn;
   j["b_r_um"] = jnum(g.b_r);
+  j["acceptance_band"] = g.acceptance_band;
   j["W_k_max_mm"] = jnum(g.W_k_max);
   j["W_k_min_mm"] = jnum(g.W_k_min);
   j["d_W_max_mm"] = jnum(g.d_W_max);

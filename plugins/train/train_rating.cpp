@@ -1,5 +1,6 @@
 #include "train_rating.hpp"
 
+#include "../gear/gear_rating_yaml.hpp"
 #include "../gear/gear_rating_report.hpp"
 
 #include <gearkit/gear/gear_pair.hpp>
@@ -40,23 +41,22 @@ struct RatingData {
   std::optional<gg::Material> material;
   std::optional<double> K_gamma;
   io::SourceMark mark;
+  std::map<std::string, io::SourceMark> marks;  ///< RatingInput field -> where its key was written
   std::map<std::string, GearData> gears;
 };
 
-gg::Material material_at(const YAML::Node& node, const std::string& file) {
-  try {
-    return gg::material_by_name(io::scalar_text(node, file, "material"));
-  } catch (const std::invalid_argument& e) {
-    io::fail_at(io::mark_of(node, file), e.what());
-  }
-}
+// The key of the `rating:` section that sets each RatingInput field a rating error can name.
+constexpr std::pair<const char*, const char*> kFieldKeys[] = {
+    {"quality", "quality"}, {"life_h", "life"}, {"K_A", "application_factor"}, {"K_gamma", "load_sharing"},
+    {"nu_40", "oil_viscosity"}, {"R_z_flank", "flank_roughness"}, {"R_z_root", "root_roughness"},
+    {"S_Hmin", "min_safety_pitting"}, {"S_Fmin", "min_safety_bending"}, {"method", "method"}};
 
 void read_section(io::MapReader& r, RatingData& d) {
   const std::string method = r.choice("method", {"iso6336", "agma", "lewis-hertz"}, "iso6336");
   d.base.method = method == "agma" ? gg::RatingMethod::agma : method == "lewis-hertz" ? gg::RatingMethod::lewis_hertz
                                                                                       : gg::RatingMethod::iso6336;
   d.base.life_h = r.quantity_or("life", io::Quantity::time, "h", d.base.life_h * 3600.0) / 3600.0;
-  if (auto q = r.optional_integer("quality")) d.base.quality = static_cast<int>(*q);
+  plugins::gear::read_accuracy(r, d.base);
   d.base.K_A = r.optional_number("application_factor").value_or(1.0);
   d.K_gamma = r.optional_number("load_sharing");
   d.base.nu_40 = r.optional_number("oil_viscosity").value_or(d.base.nu_40);
@@ -65,9 +65,16 @@ void read_section(io::MapReader& r, RatingData& d) {
   d.base.S_Hmin = r.optional_number("min_safety_pitting").value_or(d.base.S_Hmin);
   d.base.S_Fmin = r.optional_number("min_safety_bending").value_or(d.base.S_Fmin);
   if (auto w = r.optional_quantity("face_width", io::Quantity::length, "mm")) d.face_width_mm = *w * 1000.0;
-  if (auto m = r.optional_node("material")) d.material = material_at(*m, r.file());
+  if (auto m = r.optional_node("material")) d.material = plugins::gear::read_material(*m, r.file(), "material");
   d.mark = r.mark();
+  for (const auto& [field, key] : kFieldKeys) d.marks[field] = r.mark(key);
   r.finish();
+}
+
+// Where to report a rating error naming `field`: its key in `rating:`, else the section (or file).
+io::SourceMark mark_for_field(const RatingData& d, const std::string& field) {
+  const auto it = d.marks.find(field);
+  return it == d.marks.end() ? d.mark : it->second;
 }
 
 RatingData read_rating_data(const std::string& path) {
@@ -82,7 +89,7 @@ RatingData read_rating_data(const std::string& path) {
     GearData g;
     g.mark = io::mark_of(item, doc.file);
     if (const YAML::Node w = item["face_width"]) g.face_width_mm = io::scalar_quantity(w, doc.file, io::Quantity::length, "mm") * 1000.0;
-    if (const YAML::Node m = item["material"]) g.material = material_at(m, doc.file);
+    if (const YAML::Node m = item["material"]) g.material = plugins::gear::read_material(m, doc.file, "material");
     d.gears[item["name"].as<std::string>()] = g;
   }
   return d;
@@ -201,7 +208,7 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
   } catch (const gg::GeometryError& e) {
     io::fail_at(gear_data(d, g1).mark, fmt::format("mesh '{}': {}", mesh.name, e.what()));
   } catch (const gg::RatingError& e) {
-    io::fail_at(d.mark, fmt::format("mesh '{}': {} ({})", mesh.name, e.what(), e.field()));
+    io::fail_at(mark_for_field(d, e.field()), fmt::format("mesh '{}': {}", mesh.name, e.what()));
   }
   return m;
 }

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -183,4 +185,67 @@ TEST(GearRatingCli, ProtuberanceThinsTheRoot) {
     return nlohmann::json::parse(r.out)["rating"]["gears"][0]["Y_F"].get<double>();
   };
   EXPECT_GT(Y_F("--protuberance 0.05"), Y_F(""));
+}
+
+// The audit's deep-tooth pair (ISO 6336-3:2019 clause 10): without --quality the precision is
+// unknown and Y_DT = 1 (it was 0.774, "no grade" acting as grade 0); class 7 also gives 1.
+TEST(GearRatingCli, DeepToothFactorWithoutAGradeIsOne) {
+  const std::string pair = "--z1 40 --z2 120 --module 2 --helix-angle 35 --addendum 1.3 --dedendum 1.55 --root-radius 0.2 "
+                           "--face-width 40 --speed1 1000 --material1 42CrMo4 --material2 42CrMo4 --torque1 200 --f-pb 10 "
+                           "--f-falpha 10 --f-ma 10 --format json";
+  for (const char* grade : {"", " --quality 7"}) {
+    const CliRun r = run(pair + grade);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out)["rating"];
+    EXPECT_DOUBLE_EQ(j["gears"][0]["Y_DT"].get<double>(), 1.0) << grade;
+  }
+  const auto j = nlohmann::json::parse(run(pair).out)["rating"];
+  EXPECT_TRUE(j["iso1328_grade"].is_null());
+  EXPECT_LT(nlohmann::json::parse(run(pair + " --quality 4").out)["rating"]["gears"][0]["Y_DT"].get<double>(), 1.0);
+}
+
+// --iso1328-edition 1995 reaches the rating: its grade range (0..12) and its tolerances for K_v.
+TEST(GearRatingCli, TheRatingUsesTheIso1328EditionGiven) {
+  const std::string args = kPair + " --torque1 9kN*m --speed1 3000 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
+                                   "--format json --quality 6";
+  auto rating = [&](const std::string& extra) {
+    const CliRun r = run(args + extra);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out)["rating"];
+  };
+  const auto a = rating(""), b = rating(" --iso1328-edition 1995");
+  EXPECT_EQ(a["iso1328_edition"], "ISO 1328-1:2013");
+  EXPECT_EQ(b["iso1328_edition"], "ISO 1328-1:1995");
+  EXPECT_NE(a["factors"]["K_v"].get<double>(), b["factors"]["K_v"].get<double>());
+  const CliRun zero = run(kPair + kLoad + "--quality 0 --iso1328-edition 1995 --format json");
+  ASSERT_EQ(zero.status, 0) << zero.err;
+  EXPECT_EQ(nlohmann::json::parse(zero.out)["rating"]["iso1328_grade"], 0);
+  expect_error(run(kPair + kLoad + "--quality 0"), "'--quality'");  // 2013: classes 1..11
+}
+
+// A negative life in a spectrum file is blamed on the `life:` key, not on a spectrum row.
+TEST(GearRatingCli, NegativeLifeOfASpectrumNamesTheLifeKey) {
+  std::ifstream in(std::string(GEARKIT_SOURCE_DIR) + "/examples/gears/spectrum_stage.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  const std::size_t at = s.find("life: 20000 h");
+  ASSERT_NE(at, std::string::npos);
+  s.replace(at, std::string("life: 20000 h").size(), "life: -2 h");
+  const int line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+  const std::string file = write("negative_life.yaml", s);
+  expect_error(run("'" + file + "'"), "negative_life.yaml:" + std::to_string(line) + ":9:");
+}
+
+// A pair file gives the grade's edition as `iso1328_edition:`; a grade outside it is reported at
+// the `quality:` key.
+TEST(GearRatingCli, PairFileGradeAndItsEdition) {
+  const std::string base = "z1: 20\nz2: 60\nmodule: 3\nface_width: 30\nmaterials: {gear1: 42CrMo4, gear2: 42CrMo4}\n";
+  const std::string load = "load: {torque1: 100, speed1: 1000}\n";
+  const std::string ok = write("grade0_1995.yaml", base + "quality: 0\niso1328_edition: 1995\n" + load);
+  const CliRun r = run("'" + ok + "' --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["rating"]["iso1328_edition"], "ISO 1328-1:1995");
+  const std::string bad = write("grade0_2013.yaml", base + "quality: 0\n" + load);
+  expect_error(run("'" + bad + "'"), "grade0_2013.yaml:6:10:");
 }

@@ -119,3 +119,34 @@ TEST(GearToleranceCommand, NoBacklashIsAWarning) {
   EXPECT_NE(r.out.find("minimum backlash"), std::string::npos);
   EXPECT_EQ(run_gearkit(args + " --strict").status, 3);
 }
+
+// ISO 1328-1:1995 grades run 0..12 (the help says so); grade 0 used to fail in the ISO/TR 10064-2
+// allowances (no radial infeed tolerance below grade 1).
+TEST(GearToleranceCommand, Iso1328_1995GradeZero) {
+  const auto j = json_of("--quality 0 --iso1328-edition 1995");
+  EXPECT_EQ(j["gears"][0]["tolerances"]["grade"], 0);
+  EXPECT_EQ(j["gears"][0]["tolerances"]["edition"], "ISO 1328-1:1995");
+  EXPECT_GT(j["gears"][0]["W_k_max_mm"].get<double>(), j["gears"][0]["W_k_min_mm"].get<double>());
+}
+
+// The audit's case: gear 1's tolerance (10 um) is narrower than its runout term (2 x 8.65 um): no
+// acceptance band; W_k and M_d limits are both null (not one inverted and one re-sorted).
+TEST(GearToleranceCommand, NoAcceptanceBandNullsSpanAndPinLimitsAlike) {
+  const auto j = json_of("--thickness-allowances1 0.005,-0.005 --thickness-allowances2 0,-0.02 --quality 7");
+  const auto& g1 = j["gears"][0];
+  EXPECT_EQ(g1["acceptance_band"], false);
+  for (const char* key : {"W_k_max_mm", "W_k_min_mm", "M_d_max_mm", "M_d_min_mm"}) EXPECT_TRUE(g1[key].is_null()) << key;
+  EXPECT_EQ(j["gears"][1]["acceptance_band"], true);
+  const auto r = run_gearkit(std::string(kPair) + "--thickness-allowances1 0.005,-0.005 --thickness-allowances2 0,-0.02 --quality 7");
+  EXPECT_NE(r.out.find("gear 1: the thickness tolerance"), std::string::npos) << r.out;
+}
+
+// A narrow helical gear: one face-width warning per gear for the span, not one for the nominal
+// W_k and another for W_k,max.
+TEST(GearToleranceCommand, OneFaceWidthWarningPerGear) {
+  const auto r = run_gearkit("gear --z1 20 --z2 40 --module 3 --helix-angle 30 --face-width 8 --quality 7");
+  ASSERT_EQ(r.status, 0) << r.err;
+  int narrow = 0;
+  for (std::size_t at = r.out.find("too narrow"); at != std::string::npos; at = r.out.find("too narrow", at + 1)) ++narrow;
+  EXPECT_EQ(narrow, 2) << r.out;
+}

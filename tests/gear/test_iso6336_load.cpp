@@ -85,3 +85,14 @@ TEST(TransverseLoadFactor, FormulaAndLimits) {
   EXPECT_NEAR(iso::limit_K_Halpha(5.0, 1.6, 1.6, 0.9), 1.0 / 0.81, 1e-12);
   EXPECT_NEAR(iso::limit_K_Falpha(5.0, 1.6, 1.6), 1.6 / (0.4 + 0.75), 1e-12);
 }
+
+// ISO 6336-1:2019 6.5.9 (as DIN 3990-1): for two materials C_ay = 0.5 (C_ay1 + C_ay2), the mean,
+// like the running-in allowances y_alpha and y_beta. By hand: case-carburized 1500 MPa:
+// (1500/97 - 18.45)^2/18 + 1.5 = 1.9954 um; through-hardened 700 MPa: (700/97 - 18.45)^2/18 + 1.5
+// = 8.5106 um; mean 5.2530 um (the larger value, used before, is 8.5106 um).
+TEST(DynamicFactor, TipReliefByRunningInOfTwoMaterials) {
+  EXPECT_NEAR(iso::tip_relief_by_running_in(1500.0), 1.9954, 1e-4);
+  EXPECT_NEAR(iso::tip_relief_by_running_in(700.0), 8.5106, 1e-4);
+  EXPECT_NEAR(iso::mesh_tip_relief_by_running_in(1500.0, 700.0), 5.2530, 1e-4);
+  EXPECT_DOUBLE_EQ(iso::mesh_tip_relief_by_running_in(1500.0, 1500.0), iso::tip_relief_by_running_in(1500.0));
+}

@@ -130,6 +130,7 @@ TEST(ToothRoot, StressCorrectionAndSimpleFactors) {
   EXPECT_DOUBLE_EQ(iso::deep_tooth_factor(2.3, 6), 1.0);
   EXPECT_NEAR(iso::deep_tooth_factor(2.3, 4), -0.666 * 2.3 + 2.366, 1e-12);
   EXPECT_DOUBLE_EQ(iso::deep_tooth_factor(2.7, 3), 0.7);
+  EXPECT_DOUBLE_EQ(iso::deep_tooth_factor(2.7, 0), 0.7);  // ISO 1328-1:1995 grade 0 is the finest grade
   EXPECT_NEAR(iso::relative_notch_sensitivity_factor(0.003, 2.5), 1.0, 1e-12);  // the test gear's notch
   EXPECT_NEAR(iso::relative_surface_factor(gg::MaterialClass::case_carburized, 0.5), 1.12, 1e-12);
   EXPECT_NEAR(iso::size_factor_F(gg::MaterialClass::case_carburized, 8.0), 0.97, 1e-12);
@@ -141,4 +142,13 @@ TEST(ToothRoot, StressCorrectionAndSimpleFactors) {
 TEST(ToothRoot, ImpossibleConstructionIsADomainError) {
   iso::ToothRootInput in = spur(17, 0.0, 5.0);  // load point below the base circle
   EXPECT_THROW(iso::external_tooth_root(in), std::domain_error);
+}
+
+// ISO 6336-3:2019 clause 10: Y_DT < 1 is for gears of proven high precision (grade <= 4). Without
+// a grade the precision is unknown and the factor stays 1 (it used to take "no grade" as grade 0).
+TEST(ToothRoot, DeepToothFactorNeedsAKnownGrade) {
+  EXPECT_DOUBLE_EQ(iso::deep_tooth_factor(2.7, std::nullopt), 1.0);
+  EXPECT_DOUBLE_EQ(iso::deep_tooth_factor(2.3, std::nullopt), 1.0);
+  EXPECT_DOUBLE_EQ(iso::deep_tooth_factor(2.7, 5), 1.0);
+  EXPECT_NEAR(iso::deep_tooth_factor(2.3, 4), 0.8342, 1e-4);
 }

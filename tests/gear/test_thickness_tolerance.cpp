@@ -42,7 +42,14 @@ TEST(ThicknessTolerance, RadialInfeedTable) {
   EXPECT_NEAR(gg::radial_infeed_tolerance(7, 100), 87, 1e-9);
   EXPECT_NEAR(gg::radial_infeed_tolerance(8, 100), 1.26 * 87, 1e-9);
   EXPECT_NEAR(gg::radial_infeed_tolerance(9, 100), 140, 1e-9);
-  for (int q = 1; q < 12; ++q) EXPECT_LT(gg::radial_infeed_tolerance(q, 100), gg::radial_infeed_tolerance(q + 1, 100));
-  EXPECT_THROW(gg::radial_infeed_tolerance(0, 100), std::domain_error);
+  for (int q = 0; q < 12; ++q) EXPECT_LT(gg::radial_infeed_tolerance(q, 100), gg::radial_infeed_tolerance(q + 1, 100));
+  EXPECT_THROW(gg::radial_infeed_tolerance(-1, 100), std::domain_error);
   EXPECT_THROW(gg::radial_infeed_tolerance(13, 100), std::domain_error);
+}
+
+// Grade 0 exists in ISO 1328-1:1995 (0..12): the rule continued one 1.26 step below grade 1 = IT6
+// (IT6 = 22 um at d = 100 mm, ISO 286-1 Table 1): 22 / 1.26 = 17.46 um; it used to be rejected.
+TEST(ThicknessTolerance, RadialInfeedOfGradeZero) {
+  EXPECT_NEAR(gg::radial_infeed_tolerance(0, 100), 22.0 / 1.26, 1e-9);
+  EXPECT_NEAR(gg::radial_infeed_tolerance(0, 800) * 1.26, gg::radial_infeed_tolerance(1, 800), 1e-9);  // above 500 mm too
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -72,4 +73,59 @@ TEST(TrainRating, BadInput) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(bad.filename().string() + ":"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1);
+}
+
+namespace {
+
+// rated_planetary.yaml with `from` replaced by `to`, written to a scratch file; `line` gets the
+// line of the replacement.
+std::string edited(const std::string& name, const std::string& from, const std::string& to, int* line = nullptr) {
+  std::ifstream in(kFile);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  const std::size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  s.replace(at, from.size(), to);
+  if (line) *line = 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+  const fs::path p = gearkit::testing::scratch_dir("train-rating") / name;
+  std::ofstream(p) << s;
+  return p.string();
+}
+
+void expect_error_at(const CliRun& r, const std::string& where) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+}
+
+}  // namespace
+
+// A bad rating value is reported at its own key (not at `rating:`), without internal field names.
+TEST(TrainRating, ErrorsNameTheOffendingKey) {
+  int line = 0;
+  const std::string quality = edited("quality13.yaml", "quality: 6", "quality: 13", &line);
+  CliRun r = run("'" + quality + "' --torque sun=40 --rate");
+  expect_error_at(r, "quality13.yaml:" + std::to_string(line) + ":12:");
+  const std::string life = edited("life_negative.yaml", "life: 10000 h", "life: -2 h", &line);
+  r = run("'" + life + "' --torque sun=40 --rate");
+  expect_error_at(r, "life_negative.yaml:" + std::to_string(line) + ":9:");
+  EXPECT_EQ(r.err.find("life_h"), std::string::npos) << r.err;
+}
+
+// The same material reader as gear-pair files: a user-defined material map is accepted.
+TEST(TrainRating, UserDefinedMaterialMap) {
+  const std::string file = edited("own_material.yaml", "material: 18CrNiMo7-6", "material: {name: mine, sigma_Hlim: 1200, sigma_Flim: 350}");
+  const CliRun r = run("'" + file + "' --torque sun=40 --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto sun = nlohmann::json::parse(r.out)["rating"]["meshes"][0];
+  EXPECT_EQ(sun["materials"][0], "mine");
+  // sigma_HP = sigma_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X / S_Hmin with the user's sigma_Hlim = 1200 MPa.
+  const auto& g = sun["gears"][0];
+  const double product = g["Z_NT"].get<double>() * g["Z_L"].get<double>() * g["Z_v"].get<double>() * g["Z_R"].get<double>() *
+                         g["Z_W"].get<double>() * g["Z_X"].get<double>();
+  EXPECT_NEAR(g["sigma_HP_MPa"].get<double>(), 1200.0 * product, 1e-9 * 1200.0);
+  const std::string bad = edited("bad_material.yaml", "material: 18CrNiMo7-6", "material: {name: mine, sigma_Hlim: -5, sigma_Flim: 350}");
+  expect_error_at(run("'" + bad + "' --torque sun=40 --rate"), "bad_material.yaml:");
 }

@@ -50,12 +50,17 @@ struct GearInspection {
   double b_r = 0;                   ///< radial infeed tolerance, um (ISO/TR 10064-2 system)
   double F_r = 0;                   ///< runout tolerance used for the measurement allowances, um (0: none)
   ThicknessAllowances measured;     ///< allowances the span and pins must meet (runout term removed)
+  /// False when the runout term leaves no acceptance band (measured.A_sne < measured.A_sni): no
+  /// tooth can be accepted, and W_k_max/min, d_W_max/min and M_d_max/min are all NaN (a warning).
+  bool acceptance_band = true;
   int k = 0;                        ///< teeth spanned
-  double W_k_max = 0, W_k_min = 0;  ///< span limits
+  double W_k_max = 0, W_k_min = 0;  ///< span limits: thickest and thinnest accepted tooth
   double d_W_max = 0, d_W_min = 0;  ///< diameters where the anvils touch at W_k_max, W_k_min
-  double b_min_span = 0;            ///< face width the span needs: W_k_max sin(beta_b)
+  double b_min_span = 0;            ///< face width the spans need: the largest of W_k, W_k_max, W_k_min times sin(beta_b)
   double D_M = 0;                   ///< pin (ball) diameter of the table
-  double M_d_max = 0, M_d_min = 0;  ///< dimension over (external) or between (ring) pins limits
+  /// Dimension over (external) or between (ring) pins: the larger and smaller limit. External:
+  /// max at the thickest tooth; ring: max at the thinnest (its pins move outwards as the teeth thin).
+  double M_d_max = 0, M_d_min = 0;
   double D_M_min = 0, D_M_max = 0;  ///< usable pin diameters: touching within the usable flank and standing out of the tip
 };
 

@@ -63,14 +63,21 @@ const char* to_string(ResonanceRange range);
 /// main resonance, 1.15 < N < 1.5 intermediate, N >= 1.5 super-critical.
 ResonanceRange resonance_range(double N, double N_S);
 
-/// Running-in allowance for the pitch and profile deviations y_p = y_alpha, y_f (6.5.9, via 8.3.7):
-/// St/V/GGG/GTS: 160/sigma_Hlim f (<= 10400/sigma_Hlim... as 8.3.7), Eh/IF/NT/NV: 0.075 f (<= 3 um),
-/// GG/GGG ferritic: 0.275 f (<= 22 um). `surface_hardened` selects the Eh/IF/NT/NV line,
-/// `cast_iron` the GG line. um.
+/// Running-in allowance y of a pitch or profile deviation f, um, for one gear's material (8.3.7,
+/// used by 6.5.9 for y_p and y_f): St, V, GGG (perlitic, bainitic), GTS: y = 160 f / sigma_Hlim,
+/// at most 12800/sigma_Hlim for 5 < v <= 10 m/s and 6400/sigma_Hlim above 10 m/s (no limit up to
+/// 5 m/s); Eh, IF, NT, NV (`surface_hardened`): y = 0.075 f, at most 3 um; GG, GGG ferritic
+/// (`cast_iron`): y = 0.275 f, at most 22 um for 5 < v <= 10 m/s and 11 um above. f and y in um,
+/// sigma_Hlim in MPa, v in m/s. For a pair of different materials the mean of both gears' y is used.
 double running_in_allowance_alpha(double f, double sigma_Hlim, bool surface_hardened, bool cast_iron, double v);
 
-/// Tip relief by running-in C_ay = (1/18)(sigma_Hlim/97 - 18.45)^2 + 1.5 (Table 8 note), um.
+/// Tip relief by running-in of one gear's material C_ay = (1/18)(sigma_Hlim/97 - 18.45)^2 + 1.5
+/// (6.5.9, used in B_k when no tip relief is given), um; sigma_Hlim in MPa.
 double tip_relief_by_running_in(double sigma_Hlim);
+
+/// C_ay of a pair: the mean 0.5 (C_ay1 + C_ay2) of both gears' values when the materials differ
+/// (6.5.9, as for the running-in allowances y_alpha and y_beta; DIN 3990-1 states the same), um.
+double mesh_tip_relief_by_running_in(double sigma_Hlim1, double sigma_Hlim2);
 
 /// The coefficients C_v1..C_v7 of 6.5.9 Table 6 for the total contact ratio eps_gamma.
 struct DynamicCoefficients {

@@ -5,6 +5,8 @@
 // Lengths in mm, angles in rad, stresses in MPa.
 #include <gearkit/gear/materials.hpp>
 
+#include <optional>
+
 namespace gearkit::gear::iso6336 {
 
 /// Data of one external gear and its generating tool (the basic rack, normal section).
@@ -79,9 +81,11 @@ double helix_angle_factor_F(double eps_beta, double beta);
 /// s_R <= 0 means a solid gear (Y_B = 1).
 double rim_thickness_factor(double s_R, double h_t, double m_n, bool internal);
 
-/// Deep tooth factor Y_DT (10, Eq. 49-51): 1 for eps_alphan <= 2.05 or ISO grade > 4;
-/// -0.666 eps_alphan + 2.366 up to 2.5; 0.7 above.
-double deep_tooth_factor(double eps_alpha_n, int iso_grade);
+/// Deep tooth factor Y_DT (10, Eq. 49-51), for high-precision gears (ISO 1328 grade <= 4) with a
+/// virtual contact ratio eps_alphan > 2.05: -0.666 eps_alphan + 2.366 up to 2.5, 0.7 above;
+/// otherwise 1. Without a grade (`iso_grade` empty) the precision is not known and Y_DT = 1: the
+/// reduction is the standard's allowance for proven accuracy, not a default (conservative).
+double deep_tooth_factor(double eps_alpha_n, std::optional<int> iso_grade);
 
 /// Virtual contact ratio eps_alphan = eps_alpha / cos^2(beta_b) (ISO 6336-1 Eq. 8 note).
 double virtual_contact_ratio(double eps_alpha, double beta_b);

@@ -6,6 +6,7 @@
 //
 // The geometry comes from compute_gear_pair (gear_pair.hpp); the rating is a free function of
 // the table and the load, so a sizing loop computes both without building anything else.
+#include <gearkit/gear/accuracy.hpp>
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/iso6336_life.hpp>
 #include <gearkit/gear/iso6336_load.hpp>
@@ -80,11 +81,14 @@ struct RatingInput {
   double K_A = 1.0;           ///< application factor (ISO 6336-6 Annex A), AGMA overload factor K_o
   double K_gamma = 1.0;       ///< mesh load factor (load sharing of planets), >= 1
   std::array<Material, 2> material;
-  /// ISO 1328-1:2013 flank tolerance class 1..11, 0 = not given. When given, the deviations
-  /// below that are not given are the tolerances of accuracy.hpp: f_pb = f_pT cos(alpha_t),
-  /// f_falpha = f_falphaT, f_Hbeta = f_ma = f_HbetaT (larger of both gears). Also feeds Y_DT and
-  /// the AGMA quality number Q_v = 17 - class when Q_v is not given.
-  int quality = 0;
+  /// ISO 1328-1 accuracy grade of the mesh (the coarser gear): class 1..11 of the 2013 edition or
+  /// grade 0..12 of the 1995 edition (`iso1328_edition`); empty: not given. When given, the
+  /// deviations below that are not given are that edition's tolerances (accuracy.hpp): f_pb =
+  /// f_pT cos(alpha_t), f_falpha = f_falphaT, f_Hbeta = f_ma = f_HbetaT (larger of both gears).
+  /// Also decides Y_DT (a grade <= 4 is high precision; without a grade Y_DT = 1, ISO 6336-3:2019
+  /// clause 10) and gives the AGMA quality number Q_v = 17 - grade when Q_v is not given.
+  std::optional<int> quality;
+  Iso1328Edition iso1328_edition = Iso1328Edition::iso2013;  ///< edition of `quality`
   // Deviations, um (NaN: not given; then K_v, K_Halpha, K_Hbeta need them, the quality or an imposed factor).
   double f_pb = std::numeric_limits<double>::quiet_NaN();      ///< transverse base pitch deviation (larger gear value)
   double f_falpha = std::numeric_limits<double>::quiet_NaN();  ///< profile form deviation
@@ -146,7 +150,8 @@ struct PairRating {
 };
 
 /// Rates the pair. @throws RatingError naming the input field when the input is invalid
-/// (T_1 <= 0, n_1 <= 0, face width 0, an invalid material, life <= 0, quality outside 1..11,
+/// (T_1 <= 0, n_1 <= 0, face width 0, an invalid material, life <= 0, a grade outside its edition
+/// (2013: 1..11, 1995: 0..12),
 /// missing deviations for a computed K_v / K_Hbeta / K_Halpha, a spectrum row with T <= 0 ...).
 PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& input);
 

@@ -22,9 +22,9 @@ double recommended_min_backlash(double a, double m_n);
 /// Radial infeed tolerance b_r of the tooth cutting, um, by accuracy grade and reference diameter d
 /// (mm), in ISO 286 IT values of d: grade 4: 1.26 IT7, 5: IT8, 6: 1.26 IT8, 7: IT9, 8: 1.26 IT9,
 /// 9: IT10 (the table used with ISO/TR 10064-2, e.g. in GB/Z 18620.2), continued by its own rule
-/// (one IT grade every two accuracy grades, 1.26 = sqrt 1.6 between): 1: IT6, 2: 1.26 IT6, 3: IT7,
-/// 10: 1.26 IT10, 11: IT11, 12: 1.26 IT11.
-/// @throws std::domain_error for grades outside 1..12 or d outside what iso286.hpp tabulates.
+/// (one IT grade every two accuracy grades, 1.26 = sqrt 1.6 between): 0: IT6/1.26 (the 1995
+/// edition's grade 0), 1: IT6, 2: 1.26 IT6, 3: IT7, 10: 1.26 IT10, 11: IT11, 12: 1.26 IT11.
+/// @throws std::domain_error for grades outside 0..12 or d outside what iso286.hpp tabulates.
 double radial_infeed_tolerance(int grade, double d);
 
 /// Tooth thickness tolerance T_sn = 2 tan(alpha_n) sqrt(F_r^2 + b_r^2), um (F_r runout tolerance and

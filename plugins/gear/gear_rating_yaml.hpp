@@ -1,0 +1,28 @@
+#pragma once
+// YAML readers of the load-capacity input shared by gear-pair files and train files (one reader
+// each, so that both accept the same): a gear's material (`materials: gear1:` in a pair file,
+// `rating: material:` or a gear's `material:` in a train file) and the accuracy grade
+// (`quality:` with `iso1328_edition:`). docs/rating.md, docs/train.md.
+#include <gearkit/gear/materials.hpp>
+#include <gearkit/gear/rating.hpp>
+#include <gearkit/io/yaml_model.hpp>
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+namespace gearkit::plugins::gear {
+
+/// Reads the material at `node` of `file`: a named material (`18CrNiMo7-6`,
+/// `CLASS:GRADE:HARDNESS`) or a map {class:, grade:, hardness:} and/or a user-defined
+/// {name:, sigma_Hlim:, sigma_Flim:, E:, nu:, HB:}; `what` names the node in messages.
+/// @throws io::InputError at the file:line:column of the offending value for an unknown name or
+///         class, a value out of range, an unknown key, or a material that fails gear::validate.
+gearkit::gear::Material read_material(const YAML::Node& node, const std::string& file, const char* what);
+
+/// Reads `quality` (a whole ISO 1328 grade, checked against its edition by the rating) and
+/// `iso1328_edition` (2013 or 1995, default 2013) of the mapping `r` into `in`.
+/// @throws io::InputError at the key for a value that is not a whole number or not an edition.
+void read_accuracy(io::MapReader& r, gearkit::gear::RatingInput& in);
+
+}  // namespace gearkit::plugins::gear
