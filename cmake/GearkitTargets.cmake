@@ -49,6 +49,9 @@ function(gearkit_add_test_suite name)
     list(APPEND _src "${PROJECT_SOURCE_DIR}/cli/lsan_suppressions.cpp")
   endif()
   add_executable(test_${name} ${_src})
+  if(GEARKIT_SANITIZE)
+    target_compile_definitions(test_${name} PRIVATE GEARKIT_SANITIZED=1)  # for tests that cannot run under ASan
+  endif()
   target_link_libraries(test_${name} PRIVATE GTest::gtest_main gearkit_build_flags ${ARG_DEPS})
   target_include_directories(test_${name} PRIVATE "${PROJECT_SOURCE_DIR}/tests/support")
   target_compile_definitions(test_${name} PRIVATE

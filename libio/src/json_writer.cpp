@@ -35,23 +35,42 @@ void append_json_string(std::string& out, std::string_view s) {
 
 namespace {
 
-// The decimal digits of `n` written backwards ending at `end`, two at a time; returns their start.
-char* write_digits(char* end, std::uint64_t n) {
-  static constexpr char kPairs[] =
-      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-      "8081828384858687888990919293949596979899";
-  while (n >= 100) {
-    const auto pair = static_cast<std::size_t>(n % 100) * 2;
+constexpr char kPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// Exactly eight digits of n < 10^8 ending at `end`, in 32-bit arithmetic.
+void write_eight_digits(char* end, std::uint32_t n) {
+  for (int i = 0; i < 4; ++i) {
+    const std::uint32_t pair = (n % 100) * 2;
     n /= 100;
     *--end = kPairs[pair + 1];
     *--end = kPairs[pair];
   }
-  if (n >= 10) {
-    *--end = kPairs[n * 2 + 1];
-    *--end = kPairs[n * 2];
+}
+
+// The decimal digits of `n` written backwards ending at `end`; returns their start. A
+// significand has up to 17 digits: the low eight are written in one go without a 64-bit
+// division per pair.
+char* write_digits(char* end, std::uint64_t n) {
+  while (n >= 100000000) {
+    write_eight_digits(end, static_cast<std::uint32_t>(n % 100000000));
+    end -= 8;
+    n /= 100000000;
+  }
+  auto m = static_cast<std::uint32_t>(n);
+  while (m >= 100) {
+    const std::uint32_t pair = (m % 100) * 2;
+    m /= 100;
+    *--end = kPairs[pair + 1];
+    *--end = kPairs[pair];
+  }
+  if (m >= 10) {
+    *--end = kPairs[m * 2 + 1];
+    *--end = kPairs[m * 2];
   } else {
-    *--end = static_cast<char>('0' + n);
+    *--end = static_cast<char>('0' + m);
   }
   return end;
 }
@@ -111,13 +130,6 @@ void append_json_number(std::string& out, double v) {
   out.append(text, p);
 }
 
-void JsonWriter::separate() {
-  if (depth_ == 0) return;
-  Level& level = levels_[depth_ - 1];
-  if (!level.array) return;  // key() wrote the colon
-  if (!level.first) *out_ += ',';
-  level.first = false;
-}
 
 JsonKey::JsonKey(std::string_view name) {
   quoted = ",";
@@ -125,14 +137,6 @@ JsonKey::JsonKey(std::string_view name) {
   quoted += ':';
 }
 
-void JsonWriter::key(const JsonKey& k) {
-  Level& level = levels_[depth_ - 1];
-  const std::string_view text = level.first ? std::string_view(k.quoted).substr(1) : std::string_view(k.quoted);
-  level.first = false;
-  level.key_at = out_->size() + text.size() - k.quoted.size() + 2;  // inside its quotes
-  level.key_length = k.quoted.size() - 4;
-  out_->append(text);
-}
 
 void JsonWriter::key(std::string_view k) {
   Level& level = levels_[depth_ - 1];
@@ -178,14 +182,9 @@ void JsonWriter::note_non_finite() {
   if (std::find(non_finite_.begin(), non_finite_.end(), path) == non_finite_.end()) non_finite_.push_back(path);
 }
 
-void JsonWriter::value(double v) {
-  separate();
-  if (std::isfinite(v)) {
-    append_json_number(*out_, v);
-  } else {
-    *out_ += "null";
-    note_non_finite();
-  }
+void JsonWriter::non_finite_null() {
+  *out_ += "null";
+  note_non_finite();
 }
 
 void JsonWriter::value(int v) {

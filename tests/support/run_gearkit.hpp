@@ -43,22 +43,23 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return d;
 }
 
-/// Runs `gearkit <args>` with an optional environment prefix ("GEARKIT_PLUGIN_PATH=... ") and
-/// optional stdin file. `args` is already shell-quoted where needed.
+/// Runs `gearkit <args>` with an optional environment prefix ("GEARKIT_PLUGIN_PATH=... "),
+/// optional stdin file and optional stdout destination (captured in RunResult::out when empty;
+/// "/dev/null" for outputs too large to keep). `args` is already shell-quoted where needed.
 inline RunResult run_gearkit(const std::string& args, const std::string& env = "",
-                             const std::string& stdin_file = "/dev/null") {
+                             const std::string& stdin_file = "/dev/null", const std::string& stdout_file = "") {
   static int counter = 0;
   std::filesystem::path dir = std::filesystem::path(GEARKIT_BINARY_DIR) / "test-scratch" / "runs";
   std::filesystem::create_directories(dir);
   std::string stem = std::to_string(::getpid()) + "-" + std::to_string(counter++);
   std::filesystem::path out = dir / (stem + ".out"), err = dir / (stem + ".err");
   std::string cmd = env + " " + shell_quote(GEARKIT_EXE) + " " + args + " < " + shell_quote(stdin_file) + " > " +
-                    shell_quote(out.string()) + " 2> " + shell_quote(err.string());
+                    shell_quote(stdout_file.empty() ? out.string() : stdout_file) + " 2> " + shell_quote(err.string());
   int raw = std::system(cmd.c_str());
   RunResult r;
   if (WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
   else if (WIFSIGNALED(raw)) r.status = 128 + WTERMSIG(raw);
-  r.out = slurp(out);
+  if (stdout_file.empty()) r.out = slurp(out);
   r.err = slurp(err);
   std::filesystem::remove(out);
   std::filesystem::remove(err);

@@ -8,6 +8,13 @@
 
 namespace gearkit::io {
 
+/// `s` as a JSON string literal, quotes included, appended to `out`.
+void append_json_string(std::string& out, std::string_view s);
+
+/// The shortest text of `v` that reads back as the same double ("0.1", "1e-05", "3.0"),
+/// appended to `out`. Requires a finite v.
+void append_json_number(std::string& out, double v);
+
 /// A key escaped once, for keys written again and again (the columns of a sweep's rows).
 struct JsonKey {
   explicit JsonKey(std::string_view name);
@@ -33,8 +40,19 @@ class JsonWriter {
   void end_array();
   /// The key of the next value in the enclosing object (escaped as JSON requires).
   void key(std::string_view k);
-  void key(const JsonKey& k);
-  void value(double v);
+  void key(const JsonKey& k) {  // inline: a sweep writes tens of millions
+    Level& level = levels_[depth_ - 1];
+    const std::string_view text = level.first ? std::string_view(k.quoted).substr(1) : std::string_view(k.quoted);
+    level.first = false;
+    level.key_at = out_->size() + text.size() - k.quoted.size() + 2;  // inside its quotes
+    level.key_length = k.quoted.size() - 4;
+    out_->append(text);
+  }
+  void value(double v) {
+    separate();
+    if (v == v && v - v == 0) append_json_number(*out_, v);  // finite
+    else non_finite_null();
+  }
   void value(int v);
   void value(bool v);
   void value(std::string_view s);
@@ -47,7 +65,14 @@ class JsonWriter {
   void set_path_prefix(std::string prefix) { prefix_ = std::move(prefix); }
 
  private:
-  void separate();
+  void separate() {  // commas between array elements (key() writes an object member's)
+    if (depth_ == 0) return;
+    Level& level = levels_[depth_ - 1];
+    if (!level.array) return;
+    if (!level.first) *out_ += ',';
+    level.first = false;
+  }
+  void non_finite_null();
   void open(char bracket, bool array);
   void close(char bracket);
   void note_non_finite();
@@ -66,11 +91,5 @@ class JsonWriter {
   std::string prefix_;
 };
 
-/// `s` as a JSON string literal, quotes included, appended to `out`.
-void append_json_string(std::string& out, std::string_view s);
-
-/// The shortest text of `v` that reads back as the same double ("0.1", "1e-05", "3.0"),
-/// appended to `out`. Requires a finite v.
-void append_json_number(std::string& out, double v);
 
 }  // namespace gearkit::io
