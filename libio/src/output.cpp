@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -161,6 +162,14 @@ void forget_input_files() {
   inputs.clear();
 }
 
+std::vector<std::string> input_files() {
+  std::lock_guard lock(inputs_mutex);
+  std::vector<std::string> paths;
+  for (const auto& in : inputs)
+    if (std::find(paths.begin(), paths.end(), in.path) == paths.end()) paths.push_back(in.path);
+  return paths;
+}
+
 struct OutputSet::Output {
   std::string option;
   std::string path;        ///< as the user gave it
@@ -173,6 +182,7 @@ struct OutputSet::Output {
   bool in_place = false;   ///< copy into the existing inode instead of renaming over it
   bool streamed = false;
   std::string deferred;    ///< add()'s content for standard output and devices
+  std::string svg;         ///< add()'s content when it is an SVG document (for pictures())
   std::unique_ptr<FdBuffer> buffer;
   std::unique_ptr<std::ostream> stream;
 
@@ -330,6 +340,8 @@ OutputSet::Output& OutputSet::add_output(std::string_view option, const std::str
 
 void OutputSet::add(std::string_view option, const std::string& path, std::string_view content) {
   Output& out = add_output(option, path);
+  const std::string_view head = content.substr(0, 200);
+  if (head.find("<svg") != std::string_view::npos) out.svg.assign(content);
   if (out.kind == Kind::file) out.stream->write(content.data(), static_cast<std::streamsize>(content.size()));
   else out.deferred.assign(content);
 }
@@ -345,6 +357,13 @@ std::ostream& OutputSet::stream(std::string_view option, const std::string& path
     out.stream = std::make_unique<std::ostream>(out.buffer.get());
   }
   return *out.stream;
+}
+
+std::vector<OutputSet::Picture> OutputSet::pictures() const {
+  std::vector<Picture> out;
+  for (const auto& o : outputs_)
+    if (!o->svg.empty()) out.push_back({o->option, o->path, o->svg});
+  return out;
 }
 
 void OutputSet::finish_temporaries() {
