@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -46,8 +47,10 @@ std::string table_key(const std::string& title, std::size_t index) {
   return key.empty() ? fmt::format("table_{}", index) : key;
 }
 
-Report select_table(const Report& report, const std::string& name) {
-  if (name.empty() || name == "all") return report;
+namespace {
+
+// The index of the table `name` selects (see select_table).
+std::size_t selected_index(const Report& report, const std::string& name) {
   std::vector<std::size_t> hits;
   for (std::size_t i = 0; i < report.tables.size(); ++i) {
     const std::string key = table_key(report.tables[i].title, i + 1);
@@ -64,8 +67,20 @@ Report select_table(const Report& report, const std::string& name) {
                                        "or 'all', found {}{}",
                                        keys(report), report.tables.size(), quote(name),
                                        hits.empty() ? "" : fmt::format(" ({} match)", hits.size())));
+  return hits.front();
+}
+
+std::vector<Table> select_table_index_copy(const Report& report, const std::string& name) {
+  if (name.empty()) return report.tables;  // one table (checked by the caller) or none
+  return {report.tables[selected_index(report, name)]};
+}
+
+}  // namespace
+
+Report select_table(const Report& report, const std::string& name) {
+  if (name.empty() || name == "all") return report;
   Report one = report;
-  one.tables = {report.tables[hits.front()]};
+  one.tables = {report.tables[selected_index(report, name)]};
   return one;
 }
 
@@ -76,9 +91,19 @@ std::string render_for_output(const Report& report, const CommonOptions& options
     fail_option("--table", fmt::format("csv writes one table per file: choose it with --table NAME (this report has {}: "
                                        "{}), or --table all for every table with '# title' lines",
                                        report.tables.size(), keys(report)));
-  Report selected = select_table(report, options.table);
-  if (options.format == Format::csv && options.table != "all") selected.warnings.clear();  // to stderr
-  if (options.format != Format::html) return render(selected, options.format);
+  // Copies only where something changes: a sweep's report can be most of the memory of a run.
+  if (options.format != Format::csv && options.format != Format::html && options.table.empty())
+    return render(report, options.format);
+  if (options.format == Format::csv && options.table == "all") return render(report, options.format);
+  if (options.format == Format::csv) {
+    Report view;  // the one table, no JSON, warnings left for stderr
+    view.tables = select_table_index_copy(report, options.table);
+    return render(view, options.format);
+  }
+  if (options.format != Format::html) return render(select_table(report, options.table), options.format);
+  std::optional<Report> chosen;
+  if (!options.table.empty()) chosen = select_table(report, options.table);
+  const Report& selected = chosen ? *chosen : report;
   HtmlPage page;
   for (const OutputSet::Picture& p : outputs.pictures()) page.pictures.push_back({p.option + " " + p.path, p.svg});
   for (const std::string& path : input_files()) page.inputs.push_back({path, file_text(path)});
