@@ -4,6 +4,7 @@
 // points, limit positions of outputs, instant centres, Grashof class and transmission angle,
 // driving torque and joint reactions.
 #include "kin_analysis.hpp"
+#include "kin_animation_elements.hpp"
 #include "kin_coupler.hpp"
 #include "kin_equations.hpp"
 #include "kin_command.hpp"
@@ -430,6 +431,8 @@ int run_kin_command(plugin::CommandContext& context) {
       "example", io::po::value<std::string>()->value_name("chain:N"),
       "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
   add_coupler_options(desc);  // kin_coupler.cpp
+  desc.add_options()("speed", io::po::value<std::string>()->value_name("SPEED"),
+                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm)");
   io::add_common_options(desc);
   io::po::positional_options_description positional;
   positional.add("file", 1);
@@ -517,7 +520,7 @@ int run_kin_command(plugin::CommandContext& context) {
   }
   if (vm.count("animate")) {
     if (analysis.positions.empty()) report.warnings.push_back("no positions to animate; --animate file not written");
-    else outputs.add("--animate", vm["animate"].as<std::string>(), animation_svg(mech, analysis));
+    else outputs.add("--animate", vm["animate"].as<std::string>(), animation_svg(mech, analysis, animation_speed(vm, mech, driver)));
   }
   add_coupler_outputs(vm, mech, analysis, report, outputs);  // kin_coupler.cpp
   return io::emit(report, common, outputs);
