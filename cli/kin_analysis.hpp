@@ -58,7 +58,10 @@ KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, in
 KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int driver, const mechanism::DriverRange& range,
                           const kin::DofReport& dof, const PositionSink& sink);
 
-/// The SVG animation of the mechanism through the positions (SMIL, loops forever).
-std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis);
+/// The SVG animation of the mechanism through the positions (SMIL, loops forever): links, joints,
+/// ground, slider blocks on their guides, names, output point traces (kin_animation_elements.hpp).
+/// One loop takes the sweep at `input_speed` (rad/s or m/s, from --speed), else a stated default.
+std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis,
+                          std::optional<double> input_speed = std::nullopt);
 
 }  // namespace gearkit::cli

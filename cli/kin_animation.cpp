@@ -1,6 +1,7 @@
 // The animated SVG of `gearkit kin --animate`: each link drawn through its points, the joints as
 // circles, the ground points as triangles; SMIL <animate> steps through the sweep's positions.
 #include "kin_analysis.hpp"
+#include "kin_animation_elements.hpp"
 
 #include <gearkit/kin/solve.hpp>
 
@@ -21,7 +22,7 @@ Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector
 
 }  // namespace
 
-std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis) {
+std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis, std::optional<double> input_speed) {
   const kin::Model& m = mech.model;
   // At most 240 frames: the browser interpolates between them.
   std::vector<const KinPosition*> frames;
@@ -44,19 +45,22 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
       for (const auto& [name, local] : m.bodies()[b].points) grow(point_at(f->q, static_cast<int>(b), local));
   if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
   const double span = std::max({x1 - x0, y1 - y0, 1e-3});
-  const double margin = 0.08 * span;
+  const double margin = 0.14 * span;  // room for slider guides and names
   const double scale = 1000.0;  // m -> mm in the drawing's units
   const double w = (x1 - x0 + 2 * margin) * scale, h = (y1 - y0 + 2 * margin) * scale;
   const double stroke = span * scale / 150.0;
   auto X = [&](double x) { return (x - x0 + margin) * scale; };
   auto Y = [&](double y) { return (y1 - y + margin) * scale; };
-  const double duration = std::max(2.0, 0.04 * static_cast<double>(frames.size()));
+  std::string loop_text;
+  const double duration = loop_seconds(analysis, input_speed, frames.size(), loop_text);
+  const AnimationCanvas canvas{x0, y1, margin, scale, stroke};
 
   std::string svg = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.3f} {:.3f}\" width=\"800\" height=\"{:.0f}\">\n"
-      "<title>{}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
-      w, h, 800.0 * h / w, io::xml_escape(mech.title));
+      "<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      w, h, 800.0 * h / w, io::xml_escape(mech.title), io::xml_escape(loop_text));
+  svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration);
   static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
   for (const auto& [name, p] : m.ground().points) {
     const double s = 3 * stroke;
@@ -102,6 +106,10 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
       svg += "</circle>\n";
     }
   }
+  svg += name_labels(m, frames, canvas, duration);
+  svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n",
+                     2 * stroke, h - 2 * stroke,
+                     4.5 * stroke, io::xml_escape(loop_text));
   svg += "</svg>\n";
   return svg;
 }

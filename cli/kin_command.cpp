@@ -4,18 +4,17 @@
 // points, limit positions of outputs, instant centres, Grashof class and transmission angle,
 // driving torque and joint reactions.
 #include "kin_analysis.hpp"
+#include "kin_animation_elements.hpp"
 #include "kin_command.hpp"
-#include "kin_equations.hpp"
+#include "kin_coupler.hpp"
 #include "kin_example.hpp"
-#include "kin_plot.hpp"
-#include "kin_report.hpp"
 #include "kin_units.hpp"
+#include "kin_writer.hpp"
 
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/limits.hpp>
 #include <gearkit/io/output.hpp>
-#include <gearkit/io/report_stream.hpp>
 
 #include <fmt/format.h>
 
@@ -71,16 +70,6 @@ void check_continuation_work(const kin::Model& m, double distance, double step) 
 }
 
 
-// What the command line asks for, once checked.
-struct KinRequest {
-  std::string file;
-  int driver = 0;
-  std::optional<double> at;
-  std::optional<mechanism::DriverRange> range;
-  bool equations = false;
-  std::optional<std::string> plot, animate;
-  io::CommonOptions common;
-};
 
 int driver_named(const mechanism::Mechanism& mech, const io::po::variables_map& vm) {
   if (!vm.count("driver")) return 0;
@@ -140,109 +129,14 @@ kin::DofReport checked_mobility(const mechanism::Mechanism& mech, const std::str
   return d;
 }
 
-// The files besides the report: every destination is checked before the first row is written.
-struct KinFiles {
-  io::OutputSet set;
-  std::ostream* report = nullptr;
-  explicit KinFiles(std::ostream& out, const KinRequest& r) : set(out) {
-    report = &set.stream("--output", r.common.output);
-    if (r.plot) set.reserve("--plot", *r.plot);
-    if (r.animate) set.reserve("--animate", *r.animate);
-  }
-};
-
-// Positions as they come: the report's rows (the report begins with the first position, once
-// the equations, which may refuse the file's equations: section, are written at it: nothing is
-// printed before the input is known good), the plot and the animation's frames.
-class KinWriter {
- public:
-  KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, const kin::DofReport& dof, KinFiles& files)
-      : mech_(mech), r_(r), dof_(dof), files_(files), stream_(*files.report, r.common.format),
-        rows_(mech, r.driver, kin::find_four_bar(mech.model).has_value(), mech.model.has_loads(), !r.range) {}
-
-  void plan(double first, double last, long count) {
-    stride_ = std::max(1L, (count + kAnimationFrames - 1) / kAnimationFrames);
-    if (r_.plot) plot_.emplace(mech_, r_.driver, shown_input(mech_, r_.driver, first), shown_input(mech_, r_.driver, last), count);
-  }
-
-  void add(const KinPosition& p) {
-    if (!begun_) begin(&p);
-    if (stream_.format() == io::Format::json) {
-      rows_.json(p, stream_.begin_json_row());
-      stream_.end_json_row();
-    } else {
-      rows_.cells(p, cells_);
-      stream_.add_cells(cells_);
-    }
-    if (plot_) plot_->add(p);
-    if (r_.animate && seen_++ % stride_ == 0) frames_.push_back(p);
-    else if (r_.animate) last_ = p;
-  }
-
-  int finish(const KinAnalysis& a) {
-    if (!begun_) begin(nullptr);
-    io::Report tail = kin_report_tail(mech_, a);
-    for (io::Table& t : equations_.tables) tail.tables.push_back(std::move(t));
-    tail.notes.insert(tail.notes.end(), equations_.notes.begin(), equations_.notes.end());
-    tail.warnings.insert(tail.warnings.end(), equations_.warnings.begin(), equations_.warnings.end());
-    for (const auto& [key, value] : equations_.json.items()) tail.json[key] = value;
-    if (r_.plot) {
-      if (stream_.rows() == 0) tail.warnings.push_back("no positions to plot; --plot file not written");
-      else files_.set.fill("--plot", plot_->svg());
-    }
-    if (r_.animate) {
-      if (stream_.rows() == 0) {
-        tail.warnings.push_back("no positions to animate; --animate file not written");
-      } else {
-        KinAnalysis frames = a;
-        frames.positions = std::move(frames_);
-        if (last_) frames.positions.push_back(*last_);
-        files_.set.fill("--animate", animation_svg(mech_, frames));
-      }
-    }
-    const std::vector<std::string> warnings = stream_.finish(tail);
-    files_.set.commit();
-    return r_.common.strict && !warnings.empty() ? 3 : 0;
-  }
-
- private:
-  void begin(const KinPosition* first) {
-    if (r_.equations) {
-      KinAnalysis at_first;
-      at_first.driver = r_.driver;
-      at_first.dof = dof_;
-      if (first) at_first.positions.push_back(*first);
-      add_equations_section_from_module(equations_, mech_, at_first, r_.common.format);
-    }
-    stream_.begin(kin_report_head(mech_, dof_, r_.driver), rows_.table(), "positions");
-    begun_ = true;
-  }
-
-  static constexpr long kAnimationFrames = 240;  // the browser interpolates between them
-
-  const mechanism::Mechanism& mech_;
-  const KinRequest& r_;
-  const kin::DofReport& dof_;
-  KinFiles& files_;
-  io::ReportStream stream_;
-  KinRows rows_;
-  bool begun_ = false;
-  io::Report equations_;
-  std::vector<std::string> cells_;
-  std::optional<KinPlot> plot_;
-  std::vector<KinPosition> frames_;
-  std::optional<KinPosition> last_;
-  long stride_ = 1, seen_ = 0;
-};
-
-int run_analysis(const mechanism::Mechanism& mech, const KinRequest& r, std::ostream& out) {
+int run_analysis(const mechanism::Mechanism& mech, const KinRequest& r, std::ostream& out, std::ostream& err) {
   const kin::DofReport dof = checked_mobility(mech, r.file);
-  KinFiles files(out, r);
-  KinWriter writer(mech, r, dof, files);
+  KinWriter writer(mech, r, dof, out, err);
   kin::Data data(mech.model);
   if (!r.range) {
     const KinAnalysis a = analyse_single(mech, data, r.driver, r.at, dof);
-    writer.plan(a.positions.empty() ? 0.0 : a.positions.front().input, a.positions.empty() ? 0.0 : a.positions.front().input, 1);
+    const double input = a.positions.empty() ? 0.0 : a.positions.front().input;
+    writer.plan(input, input, 1);
     for (const KinPosition& p : a.positions) writer.add(p);
     return writer.finish(a);
   }
@@ -268,6 +162,9 @@ io::po::options_description kin_options() {
       "velocity ratios in the coordinates of the file's equations: section (docs/kin.md)")(
       "example", io::po::value<std::string>()->value_name("chain:N"),
       "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
+  add_coupler_options(desc);  // kin_coupler.cpp
+  desc.add_options()("speed", io::po::value<std::string>()->value_name("SPEED"),
+                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm)");
   io::add_common_options(desc);
   return desc;
 }
@@ -305,7 +202,9 @@ int run_kin_command(plugin::CommandContext& context) {
   r.equations = vm["equations"].as<bool>();
   if (vm.count("plot")) r.plot = vm["plot"].as<std::string>();
   if (vm.count("animate")) r.animate = vm["animate"].as<std::string>();
-  return run_analysis(mech, r, context.out);
+  r.speed = animation_speed(vm, mech, r.driver);
+  r.vm = &vm;
+  return run_analysis(mech, r, context.out, context.err);
 }
 
 }  // namespace gearkit::cli

@@ -34,8 +34,9 @@ void KinPlot::add(const KinPosition& p) {
   if (p.forces) reducer(effort_).add(x, p.forces->effort_virtual_power[static_cast<std::size_t>(driver_)]);
 }
 
-std::string KinPlot::svg(const std::vector<double>&) const {
+std::string KinPlot::svg(std::vector<io::PlotMark> marks) const {
   io::Plot plot;
+  plot.marks = std::move(marks);
   plot.title = mech_.title;
   plot.x_label = fmt::format("{} [{}]", mech_.drivers[static_cast<std::size_t>(driver_)].name, input_unit(mech_, driver_));
   for (std::size_t k = 0; k < outputs_.size(); ++k) {

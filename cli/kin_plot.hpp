@@ -3,6 +3,7 @@
 // effort against the input, gathered position by position in constant memory.
 #include "kin_analysis.hpp"
 
+#include <gearkit/io/plot.hpp>
 #include <gearkit/io/series_reducer.hpp>
 
 #include <string>
@@ -15,8 +16,8 @@ class KinPlot {
   /// @param x_first, x_last the sweep's input range as shown (deg or mm); `expected` positions.
   KinPlot(const mechanism::Mechanism& mech, int driver, double x_first, double x_last, long expected);
   void add(const KinPosition& p);
-  /// The SVG document. @param marks dead points to mark (inputs as shown, deg or mm).
-  std::string svg(const std::vector<double>& marks = {}) const;
+  /// The SVG document. @param marks where the sweep stopped (dead points), inputs as shown.
+  std::string svg(std::vector<io::PlotMark> marks = {}) const;
 
  private:
   const mechanism::Mechanism& mech_;

@@ -18,6 +18,7 @@ packages=(
   libmuparser-dev
   libnlopt-dev
   libginac-dev
+  chromium librecad poppler-utils   # ctest render.html_and_pdf: HTML pages in a browser, DXF to PDF
 )
 
 missing=()

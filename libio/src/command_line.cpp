@@ -2,12 +2,14 @@
 
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/quantity.hpp>
+#include <gearkit/io/report_output.hpp>
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iostream>
 #include <ostream>
 
 namespace gearkit::io {
@@ -15,8 +17,10 @@ namespace gearkit::io {
 void add_common_options(po::options_description& desc) {
   desc.add_options()
       ("help,h", "show this help and exit")
-      ("format", po::value<std::string>()->default_value("text")->value_name("text|json|csv|md"),
-       "output format")
+      ("format", po::value<std::string>()->default_value("text")->value_name("text|json|csv|md|html"),
+       "output format (html: one self-contained page with the pictures written)")
+      ("table", po::value<std::string>()->value_name("NAME"),
+       "write only the table NAME (csv: needed when the report has several; 'all': every table)")
       ("output,o", po::value<std::string>()->value_name("FILE"),
        "write the report to FILE instead of standard output ('-'); see docs/cli.md, Output files")
       ("strict", "exit with status 3 when the report has warnings");
@@ -128,6 +132,7 @@ CommonOptions common_options(const po::variables_map& vm) {
   if (vm.count("format")) o.format = parse_format(vm["format"].as<std::string>());
   if (vm.count("output")) o.output = vm["output"].as<std::string>();
   o.strict = vm.count("strict") > 0;
+  if (vm.count("table")) o.table = vm["table"].as<std::string>();
   return o;
 }
 
@@ -143,8 +148,9 @@ int emit(const Report& report, const CommonOptions& options, OutputSet& outputs)
     warn_non_finite(named);
     checked = &named;
   }
-  outputs.add("--output", options.output, render(*checked, options.format));
+  outputs.add("--output", options.output, render_for_output(*checked, options, outputs));
   outputs.commit();
+  print_moved_warnings(*checked, options, std::cerr);
   return exit_status(*checked, options);
 }
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -162,6 +163,14 @@ void forget_input_files() {
   inputs.clear();
 }
 
+std::vector<std::string> input_files() {
+  std::lock_guard lock(inputs_mutex);
+  std::vector<std::string> paths;
+  for (const auto& in : inputs)
+    if (std::find(paths.begin(), paths.end(), in.path) == paths.end()) paths.push_back(in.path);
+  return paths;
+}
+
 struct OutputSet::Output {
   std::string option;
   std::string path;        ///< as the user gave it
@@ -176,6 +185,7 @@ struct OutputSet::Output {
   bool reserved = false;   ///< reserve()d: its content comes with fill(), or it is dropped
   bool filled = false;
   std::string deferred;    ///< add()'s content for standard output and devices
+  std::string svg;         ///< add()'s content when it is an SVG document (for pictures())
   std::unique_ptr<FdBuffer> buffer;
   std::unique_ptr<std::ostream> stream;
 
@@ -331,8 +341,18 @@ OutputSet::Output& OutputSet::add_output(std::string_view option, const std::str
   return *outputs_.back();
 }
 
+namespace {
+
+// An SVG document is kept for pictures() (the HTML report shows the run's pictures inline).
+void remember_picture(std::string& svg, std::string_view content) {
+  if (content.substr(0, 200).find("<svg") != std::string_view::npos) svg.assign(content);
+}
+
+}  // namespace
+
 void OutputSet::add(std::string_view option, const std::string& path, std::string_view content) {
   Output& out = add_output(option, path);
+  remember_picture(out.svg, content);
   if (out.kind == Kind::file) out.stream->write(content.data(), static_cast<std::streamsize>(content.size()));
   else out.deferred.assign(content);
 }
@@ -348,6 +368,13 @@ std::ostream& OutputSet::stream(std::string_view option, const std::string& path
     out.stream = std::make_unique<std::ostream>(out.buffer.get());
   }
   return *out.stream;
+}
+
+std::vector<OutputSet::Picture> OutputSet::pictures() const {
+  std::vector<Picture> out;
+  for (const auto& o : outputs_)
+    if (!o->svg.empty()) out.push_back({o->option, o->path, o->svg});
+  return out;
 }
 
 void OutputSet::finish_temporaries() {
@@ -395,6 +422,7 @@ void OutputSet::reserve(std::string_view option, const std::string& path) { add_
 void OutputSet::fill(std::string_view option, std::string_view content) {
   for (auto& out : outputs_) {
     if (!out->reserved || out->filled || out->option != option) continue;
+    remember_picture(out->svg, content);
     if (out->kind == Kind::file) out->stream->write(content.data(), static_cast<std::streamsize>(content.size()));
     else out->deferred.assign(content);
     out->filled = true;

@@ -1,6 +1,7 @@
 #include <gearkit/io/report.hpp>
 
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/report_output.hpp>
 
 #include "table_text.hpp"
 
@@ -198,7 +199,8 @@ Format parse_format(std::string_view s) {
   if (s == "json") return Format::json;
   if (s == "csv") return Format::csv;
   if (s == "md" || s == "markdown") return Format::md;
-  fail_option("--format", fmt::format("expected text, json, csv or md, found {}", quote(s)));
+  if (s == "html") return Format::html;
+  fail_option("--format", fmt::format("expected text, json, csv, md or html, found {}", quote(s)));
 }
 
 void render(const Report& report, Format format, std::ostream& out) {
@@ -233,6 +235,9 @@ void render(const Report& report, Format format, std::ostream& out) {
       for (const auto& w : report.warnings) out << "- " << detail::md_escape(w) << "\n";
       return;
     }
+    case Format::html:
+      render_html(report, {}, out);
+      return;
     case Format::csv: {
       bool several = report.tables.size() > 1;
       for (std::size_t i = 0; i < report.tables.size(); ++i) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <ostream>
+#include <stdexcept>
 
 #include "table_text.hpp"
 
@@ -73,14 +74,18 @@ void ReportStream::begin(const Report& head, Table streamed, std::string rows_ke
       detail::md_table_head(out_, streamed_, streamed_.header.size());
       return;
     case Format::csv:
-      for (const Table& t : head.tables) {
-        if (!t.title.empty()) out_ << "# " << t.title << "\n";
-        detail::render_csv_table(t, out_);
-        out_ << "\n";
+      if (!csv_streamed_only_) {
+        for (const Table& t : head.tables) {
+          if (!t.title.empty()) out_ << "# " << t.title << "\n";
+          detail::render_csv_table(t, out_);
+          out_ << "\n";
+        }
+        if (!streamed_.title.empty()) out_ << "# " << streamed_.title << "\n";
       }
-      if (!streamed_.title.empty()) out_ << "# " << streamed_.title << "\n";
       detail::csv_row(out_, streamed_.header);
       return;
+    case Format::html:
+      throw std::logic_error("ReportStream: an HTML page is rendered whole (report_output.hpp)");
   }
 }
 
@@ -122,6 +127,7 @@ void ReportStream::add_cells(const std::vector<std::string>& cells) {
       detail::csv_row(buffer_, cells);
       break;
     case Format::json:
+    case Format::html:
       break;
   }
   flush_buffer(false);
@@ -190,12 +196,15 @@ std::vector<std::string> ReportStream::finish(const Report& tail) {
       for (const auto& w : warnings) out_ << "- " << detail::md_escape(w) << "\n";
       break;
     case Format::csv:
+      if (csv_streamed_only_) break;
       for (const Table& t : tail.tables) {
         out_ << "\n";
         if (!t.title.empty()) out_ << "# " << t.title << "\n";
         detail::render_csv_table(t, out_);
       }
       for (const auto& w : warnings) out_ << "# warning: " << w << "\n";
+      break;
+    case Format::html:
       break;
   }
   out_.flush();

@@ -6,6 +6,7 @@
 #include "cam_gcode.hpp"
 #include "cam_model.hpp"
 #include "cam_report.hpp"
+#include "cam_sheet.hpp"
 
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
@@ -108,17 +109,17 @@ void check_cutter(const CamModel& model, const Options& options) {
     io::fail_option(options.dyn.empty() ? "--dynamics-plot" : "--dyn", "expected a dynamics: section in the model");
 }
 
-void add_exports(const CamModel& model, const CamResult& result, const Options& options, io::OutputSet& outputs) {
-  const gc::CamProfile* second = result.second_profile ? &*result.second_profile : nullptr;
+void add_exports(const CamModel& model, const CamResult& result, const io::Report& report, const Options& options,
+                 io::OutputSet& outputs) {
   if (!options.dxf.empty()) {
     io::DxfOptions dxf;
     dxf.lines_and_arcs_only = options.dxf_lines_arcs;
-    outputs.add("--dxf", options.dxf, io::to_dxf(cam_drawing(model, result.profile, false, second), dxf));
+    outputs.add("--dxf", options.dxf, io::to_dxf(cam_sheet(model, result, report, 0.0), dxf));
   }
   if (!options.svg.empty()) {
     io::SvgOptions svg;
     svg.title = fmt::format("gearkit cam: {}", model.name.empty() ? options.file : model.name);
-    outputs.add("--svg", options.svg, io::to_svg(cam_drawing(model, result.profile, true, second), svg));
+    outputs.add("--svg", options.svg, io::to_svg(cam_sheet(model, result, report, model.follower_at), svg));
   }
   if (!options.plot.empty()) outputs.add("--plot", options.plot, io::to_svg(motion_plot(model, result.samples)));
   const CamDynamics* dyn = result.dynamics ? &*result.dynamics : nullptr;
@@ -160,9 +161,10 @@ int run_cam_command(plugin::CommandContext& context) {
   check_cutter(model, options);
   const CamResult result = analyse(model, options.file);
 
+  const io::Report report = cam_report(model, result, options.file);
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
-  add_exports(model, result, options, outputs);
-  return io::emit(cam_report(model, result, options.file), common, outputs);
+  add_exports(model, result, report, options, outputs);
+  return io::emit(report, common, outputs);
 }
 
 }  // namespace gearkit::plugins::cam

@@ -5,6 +5,7 @@
 
 #include "train_centre_distance.hpp"
 #include "train_conditions.hpp"
+#include "train_diagram.hpp"
 #include "train_file.hpp"
 #include "train_rating.hpp"
 #include "train_synth_command.hpp"
@@ -12,6 +13,7 @@
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/limits.hpp>
+#include <gearkit/io/output.hpp>
 #include <gearkit/io/quantity.hpp>
 #include <gearkit/io/report.hpp>
 #include <gearkit/train/assembly.hpp>
@@ -35,7 +37,8 @@ namespace {
 
 constexpr std::string_view usage =
     "gearkit train FILE [--fix MEMBER]... [--couple A=B]... [--input MEMBER[=SPEED]]... [--output-member MEMBER] "
-    "[--torque MEMBER=TORQUE | --power MEMBER=POWER] [--mesh-efficiency ETA] [--modes] [--format text|json|csv|md]\n"
+    "[--torque MEMBER=TORQUE | --power MEMBER=POWER] [--mesh-efficiency ETA] [--modes] [--svg FILE] [--dxf FILE] "
+    "[--format text|json|csv|md|html]\n"
     "       gearkit train synth reducer|planetary ... (see gearkit train synth --help)";
 
 constexpr double rpm_per_rad_s = 60.0 / (2.0 * std::numbers::pi);
@@ -383,6 +386,38 @@ void add_assembly(io::Report& report, const gt::TrainModel& model, double tolera
   report.json["assembly"] = j;
 }
 
+// The stick and speed diagrams (--svg, --dxf): speeds in rpm when the inputs have speeds, else as
+// multiples of the one input's speed.
+void add_pictures(const po::variables_map& vm, const gt::TrainModel& model, const Conditions& c,
+                  const gt::SpeedSolution& s, std::optional<gt::MemberId> output,
+                  const std::optional<std::vector<double>>& speeds_rad_s, const std::string& title,
+                  io::OutputSet& outputs) {
+  if (!vm.count("svg") && !vm.count("dxf")) return;
+  TrainDiagramInput in;
+  in.title = title;
+  in.output = output;
+  for (const gt::Condition& k : c.list) {
+    if (k.kind == gt::Condition::Kind::fix) in.fixed.push_back(k.member);
+    if (k.kind == gt::Condition::Kind::input) in.inputs.push_back(k.member);
+    if (k.kind == gt::Condition::Kind::couple) in.couplings.emplace_back(k.member, k.other);
+  }
+  if (!c.list.empty() && (speeds_rad_s || s.inputs.size() == 1)) {
+    in.speed_unit = speeds_rad_s ? "rpm" : "x w_" + model.member(c.list[s.inputs[0]].member).name;
+    for (gt::MemberId m = 0; m < model.member_count(); ++m) {
+      if (!s.speeds[m].determined) {
+        in.speeds.emplace_back();
+      } else if (speeds_rad_s) {
+        in.speeds.emplace_back(gt::speed_value(s, m, *speeds_rad_s) * rpm_per_rad_s);
+      } else {
+        in.speeds.emplace_back(gt::to_double(s.speeds[m].per_input[0]));
+      }
+    }
+  }
+  const io::Drawing drawing = train_diagram(model, in);
+  if (vm.count("svg")) outputs.add("--svg", vm["svg"].as<std::string>(), io::to_svg(drawing, {5, 0.3, title}));
+  if (vm.count("dxf")) outputs.add("--dxf", vm["dxf"].as<std::string>(), io::to_dxf(drawing));
+}
+
 }  // namespace
 
 int run_train_command(plugin::CommandContext& context) {
@@ -408,7 +443,10 @@ int run_train_command(plugin::CommandContext& context) {
       ("willis", po::value<std::string>()->value_name("M1,M2,..."),
        "Willis' equation of each stage in the velocity vector u = {w_M1, w_M2, ...}, planets eliminated")
       ("centre-tolerance", po::value<std::string>()->value_name("LENGTH"),
-       "coaxiality: largest accepted difference of planet centre distances (default 0.001 mm)");
+       "coaxiality: largest accepted difference of planet centre distances (default 0.001 mm)")
+      ("svg", po::value<std::string>()->value_name("FILE"),
+       "write the stick diagram of the train and the speed diagram of its planetary stages as SVG")
+      ("dxf", po::value<std::string>()->value_name("FILE"), "write the same drawing as DXF R2000");
   io::add_common_options(desc);
   po::positional_options_description positional;
   positional.add("file", 1);
@@ -514,7 +552,9 @@ int run_train_command(plugin::CommandContext& context) {
     if (!(tolerance_mm >= 0)) io::fail_option("--centre-tolerance", "expected a length >= 0");
   }
   add_assembly(report, model, tolerance_mm);
-  return io::emit(report, common, context.out);
+  io::OutputSet outputs(context.out);
+  add_pictures(vm, model, conditions, solution, output, speeds_rad_s, report.title.substr(12), outputs);
+  return io::emit(report, common, outputs);
 }
 
 }  // namespace gearkit::plugins::train

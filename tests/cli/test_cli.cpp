@@ -50,7 +50,7 @@ TEST(Cli, UsageErrors) {
   expect_bad_input(run_gearkit(""), "expected a command");
   expect_bad_input(run_gearkit("--bogus plugins"), "bogus");
   expect_bad_input(run_gearkit("plugins --format"), "format");
-  expect_bad_input(run_gearkit("plugins --format xml"), "option '--format': expected text, json, csv or md");
+  expect_bad_input(run_gearkit("plugins --format xml"), "option '--format': expected text, json, csv, md or html");
   expect_bad_input(run_gearkit("plugins --no-such-option"), "no-such-option");
   expect_bad_input(run_gearkit("--plugin /nonexistent.so plugins"), "/nonexistent.so");
 }

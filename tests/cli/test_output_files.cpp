@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
 #include <sys/stat.h>
 
 namespace fs = std::filesystem;
@@ -120,4 +123,27 @@ TEST(OutputFiles, DevicesStayDevicesDashIsStandardOutputAndEmptyIsRefused) {
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg ''"), "option '--svg': expected a value");
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg -"),
                  "option '--output': cannot write '-': standard output already receives the output of '--svg'");
+}
+
+// --table and CSV (docs/cli.md, "Tables and formats"): a CSV holds one table and nothing else, so
+// that a spreadsheet or pandas loads it; several tables and no --table is a usage error naming them.
+TEST(CsvTables, OneTablePerCsvAndWarningsOnStderr) {
+  const std::string file = std::string(GEARKIT_SOURCE_DIR) + "/examples/trains/simple_planetary.yaml";
+  auto r = gearkit::testing::run_gearkit("train " + gearkit::testing::shell_quote(file) + " --format csv");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("willis_equations_one_per_mesh, speeds, assembly_conditions"), std::string::npos) << r.err;
+  r = gearkit::testing::run_gearkit("train " + gearkit::testing::shell_quote(file) + " --format csv --table speeds");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "member,role,n [rpm],w / w_sun,n relative to carrier [rpm]");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    ++rows;
+    EXPECT_NE(line.front(), '#') << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 4) << line;
+  }
+  EXPECT_EQ(rows, 5);  // ground, sun, carrier, planet, ring
 }

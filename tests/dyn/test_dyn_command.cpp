@@ -152,7 +152,7 @@ TEST(DynCommand, FormatsAndPlots) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(gearkit::testing::slurp(speed).find("<svg"), std::string::npos);
   for (const char* format : {"text", "csv", "md"}) {
-    r = run_gearkit("dyn " + example("conveyor_belt.yaml") + " --format " + format);
+    r = run_gearkit("dyn " + example("conveyor_belt.yaml") + " --format " + format + " --table all");
     EXPECT_EQ(r.status, 0) << format << ": " << r.err;
     EXPECT_NE(r.out.find("6.6717"), std::string::npos) << format;
   }

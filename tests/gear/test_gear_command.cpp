@@ -94,7 +94,7 @@ TEST(GearCommand, UnitsInValuesAndTextTable) {
   const CliRun md = run("--z1 10 --z2 40 --module 9 --format md");
   EXPECT_EQ(md.status, 0);
   EXPECT_NE(md.out.find("|"), std::string::npos);
-  const CliRun csv = run("--z1 10 --z2 40 --module 9 --format csv");
+  const CliRun csv = run("--z1 10 --z2 40 --module 9 --format csv --table all");
   EXPECT_EQ(csv.status, 0);
   EXPECT_NE(csv.out.find(","), std::string::npos);
 }

@@ -61,7 +61,7 @@ TEST(CommandLine, ErrorsNameTheOption) {
   EXPECT_NE(error_of({"--z1"}).find("--z1"), std::string::npos);
   EXPECT_NE(error_of({"--z1", "twelve"}).find("--z1"), std::string::npos);
   EXPECT_NE(error_of({"--frobnicate"}).find("--frobnicate"), std::string::npos);
-  EXPECT_EQ(error_of({"--format", "xml"}), "option '--format': expected text, json, csv or md, found 'xml'");
+  EXPECT_EQ(error_of({"--format", "xml"}), "option '--format': expected text, json, csv, md or html, found 'xml'");
   EXPECT_NE(error_of({"a.yaml", "b.yaml"}).find("unexpected argument"), std::string::npos);
 }
 

@@ -62,7 +62,7 @@ TEST(Report, ParseFormat) {
     parse_format("xml");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "option '--format': expected text, json, csv or md, found 'xml'");
+    EXPECT_STREQ(e.what(), "option '--format': expected text, json, csv, md or html, found 'xml'");
   }
 }
 

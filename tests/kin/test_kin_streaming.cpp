@@ -60,8 +60,7 @@ TEST(KinStreaming, EveryFormatHasEveryRow) {
   ASSERT_EQ(csv.status, 0) << csv.err;
   std::istringstream lines(csv.out);
   std::string line;
-  std::getline(lines, line);
-  EXPECT_EQ(line, "# Sweep");
+  // A CSV file is one table (the positions); its first line is the header.
   std::getline(lines, line);
   EXPECT_EQ(line.rfind("theta2 [deg],crank [deg],coupler [deg],rocker [deg],theta4 [deg]", 0), 0u) << line;
   for (std::size_t k = 0; k < 361; ++k) {
@@ -71,8 +70,7 @@ TEST(KinStreaming, EveryFormatHasEveryRow) {
     EXPECT_NEAR(input, json["positions"][k]["input_deg"].get<double>(), 5e-5);
     EXPECT_NEAR(rocker_deg, json["positions"][k]["q"]["rocker.angle_deg"].get<double>(), 5e-5);
   }
-  std::getline(lines, line);
-  EXPECT_TRUE(line.empty() || line[0] == '#') << "361 rows, then the next table: " << line;
+  EXPECT_FALSE(std::getline(lines, line)) << "361 rows and nothing else: " << line;
   for (const char* format : {"md", "text"}) {
     const auto r = run_gearkit("kin " + kFourBar + " --sweep 0:90:0.25 --format " + format);
     ASSERT_EQ(r.status, 0) << r.err;
@@ -91,7 +89,9 @@ TEST(KinStreaming, AMillionPositionsRunInConstantMemory) {
     const auto r = run_gearkit("kin " + kFourBar + " --sweep 0:359.99964:0.00036 --format " + format, "ulimit -v 1000000;",
                                "/dev/null", "/dev/null");
     EXPECT_EQ(r.status, 0) << format << ": " << r.err;
-    EXPECT_EQ(r.err, "") << format;
+    // A successful run prints only marked warnings (the CSV names the tables it left out).
+    std::istringstream err(r.err);
+    for (std::string line; std::getline(err, line);) EXPECT_EQ(line.rfind("gearkit: warning: ", 0), 0u) << line;
   }
 }
 

@@ -17,6 +17,7 @@ struct CommonOptions {
   Format format = Format::text;
   std::string output = "-";  ///< --output FILE: where the report goes ("-": standard output)
   bool strict = false; ///< --strict: warnings make the exit status 3
+  std::string table = {};  ///< --table NAME: the one table to write (report_output.hpp)
 };
 
 /// Adds --help, --format, --output and --strict to `desc`.

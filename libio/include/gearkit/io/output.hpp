@@ -19,6 +19,10 @@ void note_input_file(const std::string& path);
 /// Forgets the files noted so far (for tests that run several commands in one process).
 void forget_input_files();
 
+/// The paths noted by note_input_file() so far, in the order they were read (an HTML report lists
+/// them with their content as the run's inputs).
+std::vector<std::string> input_files();
+
 /// The suffix of the temporary files an OutputSet creates next to each destination:
 /// ".<name>.<pid>-<6 letters>.gearkit-tmp". A later OutputSet writing into the same folder
 /// removes those whose process no longer runs (left by a kill).
@@ -72,6 +76,15 @@ class OutputSet {
   /// @throws InputError when a write fails (disk full, device error); regular-file outputs are
   ///         then all left as they were unless the failure happens in the final renames.
   void commit();
+
+  /// An SVG picture among the pending outputs (an HTML report shows it inline).
+  struct Picture {
+    std::string option;  ///< "--svg", "--plot"...
+    std::string path;    ///< as the user gave it
+    std::string svg;     ///< the document
+  };
+  /// The outputs added whose content is an SVG document, in the order they were added.
+  std::vector<Picture> pictures() const;
 
   struct Output;  // one pending output (defined in output.cpp)
 

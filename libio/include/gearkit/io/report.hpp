@@ -9,9 +9,9 @@
 
 namespace gearkit::io {
 
-enum class Format { text, json, csv, md };
+enum class Format { text, json, csv, md, html };
 
-/// "text" | "json" | "csv" | "md". @throws InputError naming option --format otherwise.
+/// "text" | "json" | "csv" | "md" | "html". @throws InputError naming option --format otherwise.
 Format parse_format(std::string_view s);
 
 /// A table of already-formatted cells. Units belong in the header ("d_a [mm]").

@@ -19,6 +19,13 @@ class ReportStream {
 
   Format format() const { return format_; }
 
+  /// CSV: write the streamed table alone, header first, so that a spreadsheet or pandas loads it
+  /// as it is (docs/cli.md, "Tables and formats"): no other table, no comment line; the caller
+  /// reports the warnings (on stderr) and the tables left out. Otherwise (the default) every
+  /// table follows the other, each after a "# title" line, warnings as "# warning:" lines.
+  /// Call before begin().
+  void set_csv_streamed_table_only(bool only) { csv_streamed_only_ = only; }
+
   /// Writes what is known before the rows: `head`'s title, tables and JSON keys, then the
   /// streamed table's title and header (text waits for its first 1000 rows to size the columns;
   /// later rows wider than those overflow their column). In JSON the rows form the array
@@ -50,6 +57,7 @@ class ReportStream {
 
   std::ostream& out_;
   Format format_;
+  bool csv_streamed_only_ = false;
   Report head_;  // title, notes and warnings kept for the end (its tables are written at once)
   Table streamed_;
   std::vector<std::vector<std::string>> first_rows_;  // text: rows held until the widths are known

@@ -1,0 +1,153 @@
+#include "kin_animation_elements.hpp"
+
+#include <gearkit/io/error.hpp>
+#include <gearkit/io/quantity.hpp>
+#include <gearkit/io/xml.hpp>
+#include <gearkit/kin/joints.hpp>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace gearkit::cli {
+
+namespace {
+
+Eigen::Vector2d at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
+  return kin::Model::point_position(q, {body, local});
+}
+
+double angle_of(const Eigen::VectorXd& q, int body) { return body == kin::kGround ? 0.0 : q(3 * body + 2); }
+
+std::string animate(const char* attribute, const std::vector<std::string>& values, double duration) {
+  if (values.size() < 2) return "";
+  return fmt::format("<animate attributeName=\"{}\" dur=\"{:.3f}s\" repeatCount=\"indefinite\" values=\"{}\"/>", attribute,
+                     duration, fmt::join(values, ";"));
+}
+
+}  // namespace
+
+std::optional<double> animation_speed(const io::po::variables_map& vm, const mechanism::Mechanism& mech, int driver) {
+  if (!vm.count("speed")) return std::nullopt;
+  const bool angle = mech.drivers.at(static_cast<std::size_t>(driver)).quantity == kin::DriverQuantity::angle;
+  double v = 0.0;
+  try {
+    v = io::parse_quantity_si(vm["speed"].as<std::string>(), angle ? io::Quantity::angular_velocity : io::Quantity::velocity,
+                              angle ? "rpm" : "mm/s");
+  } catch (const io::QuantityError& e) {
+    io::fail_option("--speed", e.what());
+  }
+  if (!(v > 0)) io::fail_option("--speed", fmt::format("expected a speed above 0, found {}", vm["speed"].as<std::string>()));
+  return v;
+}
+
+double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::size_t frames, std::string& text) {
+  const double span = analysis.positions.empty() ? 0.0 : std::abs(analysis.positions.back().input - analysis.positions.front().input);
+  if (speed && *speed > 0 && span > 0) {
+    text = fmt::format("one loop = the sweep at the input speed (--speed): {:.3g} s", span / *speed);
+    return span / *speed;
+  }
+  const double seconds = std::max(2.0, 0.04 * static_cast<double>(frames));
+  text = fmt::format("one loop {:.3g} s (no --speed: 25 frames per second, at least 2 s)", seconds);
+  return seconds;
+}
+
+std::string slider_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                            double duration) {
+  std::string svg;
+  const double block = 6.0 * c.stroke / c.scale;  // half length of a block [m]
+  for (const auto& constraint : model.constraints()) {
+    const auto* p = dynamic_cast<const kin::Prismatic*>(constraint.constraint.get());
+    if (!p || frames.empty()) continue;
+    std::vector<std::string> guide, slider;
+    double lo = 1e300, hi = -1e300;  // the slider's travel along the guide
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d g = at(f->q, p->guide().body, p->guide().local), s = at(f->q, p->slider().body, p->slider().local);
+      const double a = angle_of(f->q, p->guide().body);
+      const Eigen::Vector2d u = Eigen::Rotation2Dd(a) * p->axis_local().normalized();
+      const double t = (s - g).dot(u);
+      lo = std::min(lo, t), hi = std::max(hi, t);
+      const Eigen::Vector2d n(-u.y(), u.x());
+      std::string pts;
+      for (const auto& [du, dn] : {std::pair{-1.0, -0.6}, {1.0, -0.6}, {1.0, 0.6}, {-1.0, 0.6}}) {
+        const Eigen::Vector2d v = s + du * block * u + dn * block * n;
+        pts += fmt::format("{:.3f},{:.3f} ", c.X(v.x()), c.Y(v.y()));
+      }
+      slider.push_back(pts);
+    }
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d g = at(f->q, p->guide().body, p->guide().local);
+      const Eigen::Vector2d u = Eigen::Rotation2Dd(angle_of(f->q, p->guide().body)) * p->axis_local().normalized();
+      const Eigen::Vector2d a = g + (lo - 2 * block) * u, b = g + (hi + 2 * block) * u;
+      guide.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(a.x()), c.Y(a.y()), c.X(b.x()), c.Y(b.y())));
+    }
+    svg += fmt::format("<path d=\"{}\" stroke=\"#555\" stroke-width=\"{:.3f}\" stroke-dasharray=\"{:.3f} {:.3f}\"><title>guide</title>{}</path>\n",
+                       guide.front(), 0.6 * c.stroke, 3 * c.stroke, 1.5 * c.stroke, animate("d", guide, duration));
+    svg += fmt::format("<polygon points=\"{}\" fill=\"#ddd\" stroke=\"#333\" stroke-width=\"{:.3f}\"><title>slider</title>{}</polygon>\n",
+                       slider.front(), 0.6 * c.stroke, animate("points", slider, duration));
+  }
+  return svg;
+}
+
+std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                        double duration) {
+  std::string svg;
+  const double size = 4.5 * c.stroke;
+  for (const auto& [name, p] : model.ground().points) {
+    bool on_link = false;  // a pivot is named by the link point on it
+    for (const kin::Body& b : model.bodies())
+      for (const auto& point : b.points) on_link = on_link || point.first == name;
+    if (on_link) continue;
+    svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n", c.X(p.x()) + 2 * c.stroke,
+                       c.Y(p.y()) + 6 * c.stroke, size, io::xml_escape(name));
+  }
+  for (std::size_t b = 0; b < model.bodies().size() && !frames.empty(); ++b) {
+    const kin::Body& body = model.bodies()[b];
+    if (body.points.empty()) continue;
+    std::vector<std::string> lx, ly;
+    for (const KinPosition* f : frames) {
+      Eigen::Vector2d mid = Eigen::Vector2d::Zero();
+      for (const auto& [name, local] : body.points) mid += at(f->q, static_cast<int>(b), local);
+      mid /= static_cast<double>(body.points.size());
+      lx.push_back(fmt::format("{:.3f}", c.X(mid.x()) + c.stroke));
+      ly.push_back(fmt::format("{:.3f}", c.Y(mid.y()) + 6 * c.stroke));
+    }
+    svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" font-weight=\"bold\">{}{}{}</text>\n", lx.front(), ly.front(),
+                       1.2 * size, io::xml_escape(body.name), animate("x", lx, duration), animate("y", ly, duration));
+    for (const auto& [name, local] : body.points) {
+      std::vector<std::string> px, py;
+      for (const KinPosition* f : frames) {
+        const Eigen::Vector2d p = at(f->q, static_cast<int>(b), local);
+        px.push_back(fmt::format("{:.3f}", c.X(p.x()) + 2 * c.stroke));
+        py.push_back(fmt::format("{:.3f}", c.Y(p.y()) - 2 * c.stroke));
+      }
+      svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#333\">{}{}{}</text>\n", px.front(), py.front(), size,
+                         io::xml_escape(name), animate("x", px, duration), animate("y", py, duration));
+    }
+  }
+  return svg;
+}
+
+std::string output_traces(const mechanism::Mechanism& mech, const KinAnalysis& analysis, const AnimationCanvas& c) {
+  std::string svg;
+  std::vector<std::pair<int, Eigen::Vector2d>> done;
+  for (const kin::Output& o : mech.outputs) {
+    if (o.kind != kin::OutputKind::point_x && o.kind != kin::OutputKind::point_y) continue;
+    if (o.point.body == kin::kGround) continue;
+    bool seen = false;
+    for (const auto& [b, l] : done) seen = seen || (b == o.point.body && (l - o.point.local).norm() < 1e-12);
+    if (seen) continue;
+    done.emplace_back(o.point.body, o.point.local);
+    std::string d;
+    for (const KinPosition& p : analysis.positions) {
+      const Eigen::Vector2d v = at(p.q, o.point.body, o.point.local);
+      d += fmt::format("{}{:.3f},{:.3f}", d.empty() ? "M" : " L", c.X(v.x()), c.Y(v.y()));
+    }
+    svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#a000a0\" stroke-width=\"{:.3f}\" stroke-dasharray=\"{:.3f} {:.3f}\">"
+                       "<title>trace of {}</title></path>\n",
+                       d, 0.5 * c.stroke, 2 * c.stroke, c.stroke, io::xml_escape(o.name));
+  }
+  return svg;
+}
+
+}  // namespace gearkit::cli

@@ -1,0 +1,41 @@
+#pragma once
+// What `gearkit kin --animate` draws beyond the links and joints (kin_animation.cpp): slider
+// blocks on their guide lines, the names of links and points, the traces of the output points
+// (the coupler point's curve), and the loop time, from --speed when given.
+#include "kin_analysis.hpp"
+
+#include <gearkit/io/command_line.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gearkit::cli {
+
+/// The SVG viewport of an animation: model metres to SVG units (y down).
+struct AnimationCanvas {
+  double x0 = 0, y1 = 0, margin = 0, scale = 1000.0, stroke = 1.0;
+  double X(double x) const { return (x - x0 + margin) * scale; }
+  double Y(double y) const { return (y1 - y + margin) * scale; }
+};
+
+/// Seconds per loop: the sweep's span at `speed` (rad/s or m/s of the driver, from --speed), else
+/// 25 frames per second and at least 2 s. `text` says which, for the caption.
+double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::size_t frames, std::string& text);
+
+/// --speed of `gearkit kin` in SI (rad/s for an angle driver, rpm by default; m/s for a slide,
+/// mm/s by default), or nullopt. @throws io::InputError naming --speed.
+std::optional<double> animation_speed(const io::po::variables_map& vm, const mechanism::Mechanism& mech, int driver);
+
+/// Slider blocks (animated) on their guide lines (the guide's travel, animated with a moving guide).
+std::string slider_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                            double duration);
+
+/// Link names at the middle of their points and point names beside them, moving with the links.
+std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                        double duration);
+
+/// The paths of the points the model's x/y outputs follow, as dashed lines over every position.
+std::string output_traces(const mechanism::Mechanism& mech, const KinAnalysis& analysis, const AnimationCanvas& c);
+
+}  // namespace gearkit::cli

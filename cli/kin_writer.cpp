@@ -1,0 +1,169 @@
+#include "kin_writer.hpp"
+#include "kin_equations.hpp"
+#include "kin_units.hpp"
+
+#include <gearkit/io/report_output.hpp>
+#include <gearkit/kin/fourbar.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gearkit::cli {
+
+namespace {
+
+constexpr long kAnimationFrames = 240;  // the browser interpolates between them
+
+// The report is rendered whole for an HTML page, and for a CSV of a table other than the
+// positions (those come at the end of a sweep).
+bool rendered_whole(const io::CommonOptions& c, const io::Table& positions) {
+  if (c.format == io::Format::html) return true;
+  if (c.table.empty() || c.table == "all") return false;
+  return c.table != io::table_key(positions.title, 0) && c.table != "1";
+}
+
+}  // namespace
+
+KinWriter::KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, const kin::DofReport& dof, std::ostream& out,
+                     std::ostream& err)
+    : mech_(mech), r_(r), dof_(dof), err_(err), files_(out),
+      rows_(mech, r.driver, kin::find_four_bar(mech.model).has_value(), mech.model.has_loads(), !r.range) {
+  if (r.common.format == io::Format::json && !r.common.table.empty())
+    io::fail_option("--table", "expected no --table with --format json (it holds every table), found one");
+  whole_ = rendered_whole(r.common, rows_.table());
+  if (whole_) {
+    files_.reserve("--output", r.common.output);
+    whole_rows_ = rows_.table();
+  } else {
+    stream_.emplace(files_.stream("--output", r.common.output), r.common.format);
+    stream_->set_csv_streamed_table_only(r.common.format == io::Format::csv && r.common.table != "all");
+  }
+  if (r.plot) files_.reserve("--plot", *r.plot);
+  if (r.animate) files_.reserve("--animate", *r.animate);
+  coupler_points_ = reserve_coupler_outputs(*r.vm, mech.model, files_);
+}
+
+void KinWriter::plan(double first, double last, long count) {
+  stride_ = std::max(1L, (count + kAnimationFrames - 1) / kAnimationFrames);
+  if (r_.plot) plot_.emplace(mech_, r_.driver, shown_input(mech_, r_.driver, first), shown_input(mech_, r_.driver, last), count);
+  if (coupler_points_) coupler_.emplace(*coupler_points_, count);
+}
+
+void KinWriter::begin(const KinPosition* first) {
+  // The equations are written at the first position, before anything is printed: a malformed
+  // equations: section of the file is refused with nothing on standard output.
+  if (r_.equations) {
+    KinAnalysis at_first;
+    at_first.driver = r_.driver;
+    at_first.dof = dof_;
+    if (first) at_first.positions.push_back(*first);
+    add_equations_section_from_module(equations_, mech_, at_first, r_.common.format);
+  }
+  if (stream_) stream_->begin(kin_report_head(mech_, dof_, r_.driver), rows_.table(), "positions");
+  begun_ = true;
+}
+
+void KinWriter::write_row(const KinPosition& p) {
+  ++written_;
+  if (whole_) {
+    whole_json_ += written_ == 1 ? "[" : ",";
+    rows_.json(p, whole_writer_);
+    rows_.cells(p, cells_);
+    whole_rows_.add_row(cells_);
+  } else if (stream_->format() == io::Format::json) {
+    rows_.json(p, stream_->begin_json_row());
+    stream_->end_json_row();
+  } else {
+    rows_.cells(p, cells_);
+    stream_->add_cells(cells_);
+  }
+}
+
+void KinWriter::add(const KinPosition& p) {
+  if (!begun_) begin(&p);
+  write_row(p);
+  if (plot_) plot_->add(p);
+  if (coupler_) coupler_->add(p);
+  if (!r_.animate) return;
+  if (seen_++ % stride_ == 0) {
+    frames_.push_back(p);
+    last_.reset();
+  } else {
+    last_ = p;
+  }
+}
+
+io::Report KinWriter::tail_of(const KinAnalysis& a) {
+  io::Report tail = kin_report_tail(mech_, a);
+  for (io::Table& t : equations_.tables) tail.tables.push_back(std::move(t));
+  tail.notes.insert(tail.notes.end(), equations_.notes.begin(), equations_.notes.end());
+  tail.warnings.insert(tail.warnings.end(), equations_.warnings.begin(), equations_.warnings.end());
+  for (const auto& [key, value] : equations_.json.items()) tail.json[key] = value;
+  return tail;
+}
+
+void KinWriter::fill_pictures(const KinAnalysis& a, io::Report& tail) {
+  if (r_.plot) {
+    if (written_ == 0) {
+      tail.warnings.push_back("no positions to plot; --plot file not written");
+    } else {
+      std::vector<io::PlotMark> marks;
+      for (const kin::DeadPoint& d : a.dead_points)
+        marks.push_back({shown_input(mech_, a.driver, d.input),
+                         fmt::format("dead point at {:.4g} {}: the sweep stops", shown_input(mech_, a.driver, d.input),
+                                     input_unit(mech_, a.driver))});
+      files_.fill("--plot", plot_->svg(marks));
+    }
+  }
+  if (r_.animate) {
+    if (written_ == 0) {
+      tail.warnings.push_back("no positions to animate; --animate file not written");
+    } else {
+      KinAnalysis frames = a;
+      frames.positions = std::move(frames_);
+      if (last_) frames.positions.push_back(*last_);
+      files_.fill("--animate", animation_svg(mech_, frames, r_.speed));
+    }
+  }
+  if (coupler_) {
+    coupler_->finish();
+    fill_coupler_outputs(*r_.vm, mech_, r_.driver, *coupler_, tail, files_);
+  }
+}
+
+int KinWriter::finish_whole(io::Report tail) {
+  io::Report whole = kin_report_head(mech_, dof_, r_.driver);
+  whole.tables.push_back(std::move(whole_rows_));
+  for (io::Table& t : tail.tables) whole.tables.push_back(std::move(t));
+  whole.notes.insert(whole.notes.end(), tail.notes.begin(), tail.notes.end());
+  whole.warnings.insert(whole.warnings.end(), tail.warnings.begin(), tail.warnings.end());
+  for (const auto& [key, value] : tail.json.items()) whole.json[key] = value;
+  whole.json["positions"] = nlohmann::json::parse(written_ == 0 ? std::string("[]") : whole_json_ + "]");
+  io::warn_non_finite(whole);
+  files_.fill("--output", io::render_for_output(whole, r_.common, files_));
+  files_.commit();
+  io::print_moved_warnings(whole, r_.common, err_);
+  return io::exit_status(whole, r_.common);
+}
+
+int KinWriter::finish(const KinAnalysis& a) {
+  if (!begun_) begin(nullptr);
+  io::Report tail = tail_of(a);
+  fill_pictures(a, tail);
+  if (whole_) return finish_whole(std::move(tail));
+  const std::vector<std::string> warnings = stream_->finish(tail);
+  files_.commit();
+  if (r_.common.format == io::Format::csv && r_.common.table != "all") {
+    // The CSV holds the positions alone; what else the report has goes to stderr, one line each.
+    std::vector<std::string> left_out;
+    for (std::size_t i = 0; i < tail.tables.size(); ++i) left_out.push_back(io::table_key(tail.tables[i].title, i + 2));
+    for (const std::string& w : warnings) err_ << "gearkit: warning: " << w << "\n";
+    if (!left_out.empty())
+      err_ << fmt::format("gearkit: warning: the CSV holds the positions; the other tables ({}) with --table NAME\n",
+                          fmt::join(left_out, ", "));
+  }
+  return r_.common.strict && !warnings.empty() ? 3 : 0;
+}
+
+}  // namespace gearkit::cli

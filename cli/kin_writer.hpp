@@ -1,0 +1,78 @@
+#pragma once
+// `gearkit kin`: where the positions go as they are solved. Most reports stream (text, Markdown,
+// JSON, CSV of the positions table): rows leave as they come and memory does not grow with the
+// sweep. An HTML page, or a CSV of another table (--table), is rendered whole at the end.
+#include "kin_analysis.hpp"
+#include "kin_coupler.hpp"
+#include "kin_plot.hpp"
+#include "kin_report.hpp"
+
+#include <gearkit/io/command_line.hpp>
+#include <gearkit/io/output.hpp>
+#include <gearkit/io/report_stream.hpp>
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gearkit::cli {
+
+/// What the command line asks for, once checked.
+struct KinRequest {
+  std::string file;
+  int driver = 0;
+  std::optional<double> at;
+  std::optional<mechanism::DriverRange> range;
+  bool equations = false;
+  std::optional<std::string> plot, animate;
+  std::optional<double> speed;  ///< --speed, SI, for the animation's loop time
+  io::CommonOptions common;
+  const io::po::variables_map* vm = nullptr;  ///< for the coupler-curve options
+};
+
+class KinWriter {
+ public:
+  /// Checks and claims every destination (report, plot, animation, coupler files) before the
+  /// first position, so that nothing is printed before a bad one is refused.
+  /// @throws io::InputError for a bad destination, --table or --coupler.
+  KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, const kin::DofReport& dof, std::ostream& out,
+            std::ostream& err);
+
+  /// The sweep's input range and planned number of positions (plot columns, animation frames).
+  void plan(double first, double last, long count);
+  void add(const KinPosition& p);
+  /// The rest of the report and the files, all committed together. @returns the exit status.
+  int finish(const KinAnalysis& a);
+
+ private:
+  void begin(const KinPosition* first);
+  void write_row(const KinPosition& p);
+  io::Report tail_of(const KinAnalysis& a);
+  void fill_pictures(const KinAnalysis& a, io::Report& tail);
+  int finish_whole(io::Report tail);
+
+  const mechanism::Mechanism& mech_;
+  const KinRequest& r_;
+  const kin::DofReport& dof_;
+  std::ostream& err_;
+  io::OutputSet files_;
+  bool whole_ = false;  // render the report at the end (HTML, CSV of another table)
+  std::optional<io::ReportStream> stream_;
+  KinRows rows_;
+  bool begun_ = false;
+  long written_ = 0;
+  io::Report equations_;
+  std::vector<std::string> cells_;
+  io::Table whole_rows_;      // whole_: the positions table
+  std::string whole_json_;    // whole_: the positions as a JSON array, "[...]"
+  io::JsonWriter whole_writer_{whole_json_};
+  std::optional<KinPlot> plot_;
+  std::optional<std::vector<CouplerPoint>> coupler_points_;
+  std::optional<CouplerPaths> coupler_;
+  std::vector<KinPosition> frames_;
+  std::optional<KinPosition> last_;
+  long stride_ = 1, seen_ = 0;
+};
+
+}  // namespace gearkit::cli
