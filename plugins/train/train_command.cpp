@@ -383,13 +383,7 @@ void add_assembly(io::Report& report, const gt::TrainModel& model, double tolera
   report.json["assembly"] = j;
 }
 
-}  // namespace
-
-int run_train_command(plugin::CommandContext& context) {
-  if (!context.args.empty() && context.args.front() == "synth")
-    return run_train_synth_command(context, {context.args.begin() + 1, context.args.end()});
-
-  po::options_description desc("gearkit train options");
+void add_train_options(po::options_description& desc) {
   desc.add_options()
       ("file", po::value<std::string>()->value_name("FILE"), "train model (YAML, see docs/train.md)")
       ("fix", po::value<std::vector<std::string>>()->value_name("MEMBER"), "hold MEMBER still (repeatable)")
@@ -410,6 +404,110 @@ int run_train_command(plugin::CommandContext& context) {
       ("centre-tolerance", po::value<std::string>()->value_name("LENGTH"),
        "coaxiality: largest accepted difference of planet centre distances (default 0.001 mm)");
   io::add_common_options(desc);
+}
+
+/// The output member from --output-member or the file's analysis, if any.
+std::optional<gt::MemberId> output_member(const gt::TrainModel& model, const po::variables_map& vm,
+                                          const TrainFile& file) {
+  std::optional<gt::MemberId> output;
+  if (vm.count("output-member")) {
+    output = parse_member(model, vm["output-member"].as<std::string>(), fail_with(Origin{"output-member", {}}));
+  } else if (file.analysis.output) {
+    output = parse_member(model, file.analysis.output->text, fail_with(Origin{"", file.analysis.output->mark}));
+  }
+  if (output && *output == gt::ground) io::fail_option("--output-member", "expected a moving member, found 'ground'");
+  return output;
+}
+
+/// What the speed part of the report needs from the conditions and their solution.
+struct Kinematics {
+  const gt::TrainModel& model;
+  const Conditions& conditions;
+  const gt::SpeedSolution& solution;
+  std::optional<gt::MemberId> output;
+  std::optional<std::vector<double>> speeds_rad_s;  ///< the input speeds, when every input has one
+};
+
+/// Torques (--torque or --power at a member) and, with --rate, the load capacity of the meshes.
+void add_load(io::Report& report, const po::variables_map& vm, const Kinematics& k) {
+  const bool is_torque = vm.count("torque") > 0;
+  const std::string option = is_torque ? "torque" : "power";
+  const auto fail = fail_with(Origin{option, {}});
+  if (!k.output) io::fail_option("--" + option, "needs --output-member MEMBER (where the load acts)");
+  auto [member, value] = parse_member_quantity(k.model, vm[option].as<std::string>(),
+                                               is_torque ? io::Quantity::torque : io::Quantity::power,
+                                               is_torque ? "N*m" : "W", fail);
+  if (k.solution.inputs.empty()) io::fail_option("--" + option, "needs at least one --input MEMBER");
+  check_torque_member(k.model, k.conditions, member, *k.output, option);
+  bool all_determined = true;
+  for (const auto& sp : k.solution.speeds) all_determined = all_determined && sp.determined;
+  if (!all_determined) {
+    report.warnings.push_back("no torques: the conditions leave the speeds under-determined");
+    return;
+  }
+  const std::vector<double> w = k.speeds_rad_s ? *k.speeds_rad_s : std::vector<double>(k.solution.inputs.size(), 1.0);
+  if (!k.speeds_rad_s)
+    report.notes.push_back("No input speed given: powers are shown for 1 rad/s at each input (torques do not "
+                           "depend on it)");
+  if (!is_torque) {
+    if (!k.speeds_rad_s) io::fail_option("--power", "needs input speeds (--input MEMBER=SPEED) to turn power into torque");
+    const double omega = gt::speed_value(k.solution, member, w);
+    if (omega == 0) io::fail_option("--power", fmt::format("member '{}' does not turn; give a torque instead",
+                                                         k.model.member(member).name));
+    value /= omega;
+  }
+  add_torques(report, k.model, k.solution, k.conditions, w, *k.output, member, value);
+  if (vm["rate"].as<bool>()) {
+    if (!k.speeds_rad_s) io::fail_option("--rate", "needs the input speeds (--input MEMBER=SPEED)");
+    add_mesh_ratings(report, vm["file"].as<std::string>(), k.model, k.solution, k.conditions.list, w, *k.output,
+                     member, value);
+  }
+}
+
+/// Speeds, the ratio and the modes for the conditions.
+void add_kinematics(io::Report& report, const po::variables_map& vm, const Kinematics& k) {
+  nlohmann::json labels = nlohmann::json::array();
+  for (const auto& c : k.conditions.list) labels.push_back(c.label);
+  report.json["conditions"] = labels;
+  if (!k.conditions.list.empty()) add_speeds(report, k.model, k.solution, k.conditions, k.output, k.speeds_rad_s);
+  if (k.output && !k.conditions.list.empty()) add_ratio(report, k.model, k.solution, k.conditions, *k.output);
+  if (vm.count("modes")) {
+    if (!k.output) io::fail_option("--modes", "needs --output-member MEMBER (and one --input)");
+    if (k.solution.inputs.size() != 1) io::fail_option("--modes", "needs exactly one --input MEMBER");
+    add_modes(report, k.model, k.conditions, k.conditions.list[k.solution.inputs[0]].member, *k.output);
+  }
+}
+
+/// --centre-tolerance in mm (default 0.001 mm).
+double centre_tolerance_mm(const po::variables_map& vm) {
+  double tolerance_mm = 1e-3;
+  if (vm.count("centre-tolerance")) {
+    try {
+      tolerance_mm = io::parse_quantity_si(vm["centre-tolerance"].as<std::string>(), io::Quantity::length, "mm") * 1e3;
+    } catch (const io::QuantityError& e) {
+      io::fail_option("--centre-tolerance", e.what());
+    }
+    if (!(tolerance_mm >= 0)) io::fail_option("--centre-tolerance", "expected a length >= 0");
+  }
+  return tolerance_mm;
+}
+
+/// The input speeds in rad/s when every input has one.
+std::optional<std::vector<double>> input_speeds(const Conditions& conditions) {
+  if (conditions.input_speeds_rad_s.empty() || !conditions.input_speeds_rad_s.front()) return std::nullopt;
+  std::vector<double> speeds;
+  for (const auto& s : conditions.input_speeds_rad_s) speeds.push_back(*s);
+  return speeds;
+}
+
+}  // namespace
+
+int run_train_command(plugin::CommandContext& context) {
+  if (!context.args.empty() && context.args.front() == "synth")
+    return run_train_synth_command(context, {context.args.begin() + 1, context.args.end()});
+
+  po::options_description desc("gearkit train options");
+  add_train_options(desc);
   po::positional_options_description positional;
   positional.add("file", 1);
   po::variables_map vm;
@@ -427,14 +525,7 @@ int run_train_command(plugin::CommandContext& context) {
   const TrainFile file = load_train_file(vm["file"].as<std::string>(), default_efficiency);
   const gt::TrainModel& model = file.model;
   const Conditions conditions = gather_conditions(model, vm, file.analysis);
-
-  std::optional<gt::MemberId> output;
-  if (vm.count("output-member")) {
-    output = parse_member(model, vm["output-member"].as<std::string>(), fail_with(Origin{"output-member", {}}));
-  } else if (file.analysis.output) {
-    output = parse_member(model, file.analysis.output->text, fail_with(Origin{"", file.analysis.output->mark}));
-  }
-  if (output && *output == gt::ground) io::fail_option("--output-member", "expected a moving member, found 'ground'");
+  const std::optional<gt::MemberId> output = output_member(model, vm, file);
 
   io::Report report;
   report.title = "Gear train: " + (model.name().empty() ? vm["file"].as<std::string>() : model.name());
@@ -449,71 +540,15 @@ int run_train_command(plugin::CommandContext& context) {
   } catch (const gt::ConditionError& e) {
     fail_from(conditions.origins.at(e.index()), e.what());
   }
-  nlohmann::json labels = nlohmann::json::array();
-  for (const auto& c : conditions.list) labels.push_back(c.label);
-  report.json["conditions"] = labels;
-
-  std::optional<std::vector<double>> speeds_rad_s;
-  if (!conditions.input_speeds_rad_s.empty() && conditions.input_speeds_rad_s.front()) {
-    speeds_rad_s.emplace();
-    for (const auto& s : conditions.input_speeds_rad_s) speeds_rad_s->push_back(*s);
-  }
-  if (!conditions.list.empty()) add_speeds(report, model, solution, conditions, output, speeds_rad_s);
-  if (output && !conditions.list.empty()) add_ratio(report, model, solution, conditions, *output);
-
-  if (vm.count("modes")) {
-    if (!output) io::fail_option("--modes", "needs --output-member MEMBER (and one --input)");
-    if (solution.inputs.size() != 1) io::fail_option("--modes", "needs exactly one --input MEMBER");
-    add_modes(report, model, conditions, conditions.list[solution.inputs[0]].member, *output);
-  }
-
+  const Kinematics kinematics{model, conditions, solution, output, input_speeds(conditions)};
+  add_kinematics(report, vm, kinematics);
   if (vm.count("torque") && vm.count("power")) io::fail_option("--power", "give either --torque or --power, not both");
   if (vm.count("torque") || vm.count("power")) {
-    const bool is_torque = vm.count("torque") > 0;
-    const std::string option = is_torque ? "torque" : "power";
-    const auto fail = fail_with(Origin{option, {}});
-    if (!output) io::fail_option("--" + option, "needs --output-member MEMBER (where the load acts)");
-    auto [member, value] = parse_member_quantity(model, vm[option].as<std::string>(),
-                                                 is_torque ? io::Quantity::torque : io::Quantity::power,
-                                                 is_torque ? "N*m" : "W", fail);
-    if (solution.inputs.empty()) io::fail_option("--" + option, "needs at least one --input MEMBER");
-    check_torque_member(model, conditions, member, *output, option);
-    bool all_determined = true;
-    for (const auto& sp : solution.speeds) all_determined = all_determined && sp.determined;
-    if (!all_determined) {
-      report.warnings.push_back("no torques: the conditions leave the speeds under-determined");
-    } else {
-      const std::vector<double> w = speeds_rad_s ? *speeds_rad_s : std::vector<double>(solution.inputs.size(), 1.0);
-      if (!speeds_rad_s)
-        report.notes.push_back("No input speed given: powers are shown for 1 rad/s at each input (torques do not "
-                               "depend on it)");
-      if (!is_torque) {
-        if (!speeds_rad_s) io::fail_option("--power", "needs input speeds (--input MEMBER=SPEED) to turn power into torque");
-        const double omega = gt::speed_value(solution, member, w);
-        if (omega == 0) io::fail_option("--power", fmt::format("member '{}' does not turn; give a torque instead",
-                                                             model.member(member).name));
-        value /= omega;
-      }
-      add_torques(report, model, solution, conditions, w, *output, member, value);
-      if (vm["rate"].as<bool>()) {
-        if (!speeds_rad_s) io::fail_option("--rate", "needs the input speeds (--input MEMBER=SPEED)");
-        add_mesh_ratings(report, vm["file"].as<std::string>(), model, solution, conditions.list, w, *output, member, value);
-      }
-    }
+    add_load(report, vm, kinematics);
   } else if (vm["rate"].as<bool>()) {
     io::fail_option("--rate", "needs the load: --torque MEMBER=TORQUE or --power MEMBER=POWER");
   }
-
-  double tolerance_mm = 1e-3;
-  if (vm.count("centre-tolerance")) {
-    try {
-      tolerance_mm = io::parse_quantity_si(vm["centre-tolerance"].as<std::string>(), io::Quantity::length, "mm") * 1e3;
-    } catch (const io::QuantityError& e) {
-      io::fail_option("--centre-tolerance", e.what());
-    }
-    if (!(tolerance_mm >= 0)) io::fail_option("--centre-tolerance", "expected a length >= 0");
-  }
-  add_assembly(report, model, tolerance_mm);
+  add_assembly(report, model, centre_tolerance_mm(vm));
   return io::emit(report, common, context.out);
 }
 
