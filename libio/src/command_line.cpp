@@ -22,6 +22,14 @@ void add_common_options(po::options_description& desc) {
       ("strict", "exit with status 3 when the report has warnings");
 }
 
+void add_positional_argument(po::options_description& desc, po::positional_options_description& positional,
+                             const char* name, const char* value_name, const char* description, bool required) {
+  auto* value = po::value<std::string>()->value_name(value_name);
+  if (required) value->required();
+  desc.add_options()(name, value, description);
+  positional.add(name, 1);
+}
+
 namespace {
 
 /// The names of the positional arguments ("file"), in order.
@@ -34,6 +42,9 @@ std::vector<std::string> positional_names(const po::positional_options_descripti
   }
   return names;
 }
+
+/// A usage of several lines (a command and its subcommands) is quoted in a message by its first.
+std::string_view first_line(std::string_view usage) { return usage.substr(0, usage.find('\n')); }
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -108,12 +119,21 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
     }
     po::notify(vm);
   } catch (const po::too_many_positional_options_error&) {
-    throw InputError(fmt::format("unexpected argument; usage: {}", usage));
+    throw InputError(fmt::format("unexpected argument; usage: {}", first_line(usage)));
   } catch (const po::required_option& e) {
     std::string name = e.get_option_name();
     name.erase(0, name.find_first_not_of('-'));
-    if (std::find(positionals.begin(), positionals.end(), name) != positionals.end())
-      throw InputError(fmt::format("expected the {} argument, found none; usage: {}", upper(name), usage));
+    if (std::find(positionals.begin(), positionals.end(), name) != positionals.end()) {
+      // Boost names the first missing one in alphabetical order; the user reads them in order.
+      for (const std::string& p : positionals) {
+        const po::option_description* option = desc.find_nothrow(p, false);
+        if (!vm.count(p) && option && option->semantic()->is_required()) {
+          name = p;
+          break;
+        }
+      }
+      throw InputError(fmt::format("expected the {} argument, found none; usage: {}", upper(name), first_line(usage)));
+    }
     throw InputError(shorten_quoted_parts(e.what()));
   } catch (const po::error& e) {
     throw InputError(shorten_quoted_parts(e.what()));

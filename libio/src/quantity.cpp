@@ -370,32 +370,4 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
   return si_value;
 }
 
-Length parse_length(std::string_view text, std::string_view default_unit) {
-  return Length::from_value(parse_quantity_si(text, Quantity::length, default_unit));
-}
-Angle parse_angle(std::string_view text, std::string_view default_unit) {
-  return Angle::from_value(parse_quantity_si(text, Quantity::angle, default_unit));
-}
-AngularVelocity parse_angular_velocity(std::string_view text, std::string_view default_unit) {
-  return AngularVelocity::from_value(parse_quantity_si(text, Quantity::angular_velocity, default_unit));
-}
-Power parse_power(std::string_view text, std::string_view default_unit) {
-  return Power::from_value(parse_quantity_si(text, Quantity::power, default_unit));
-}
-Torque parse_torque(std::string_view text, std::string_view default_unit) {
-  return Torque::from_value(parse_quantity_si(text, Quantity::torque, default_unit));
-}
-MomentOfInertia parse_moment_of_inertia(std::string_view text, std::string_view default_unit) {
-  return MomentOfInertia::from_value(parse_quantity_si(text, Quantity::moment_of_inertia, default_unit));
-}
-Mass parse_mass(std::string_view text, std::string_view default_unit) {
-  return Mass::from_value(parse_quantity_si(text, Quantity::mass, default_unit));
-}
-Force parse_force(std::string_view text, std::string_view default_unit) {
-  return Force::from_value(parse_quantity_si(text, Quantity::force, default_unit));
-}
-Time parse_time(std::string_view text, std::string_view default_unit) {
-  return Time::from_value(parse_quantity_si(text, Quantity::time, default_unit));
-}
-
 }  // namespace gearkit::io

@@ -132,8 +132,9 @@ void add_exports(const CamModel& model, const CamResult& result, const Options& 
 
 int run_cam_command(plugin::CommandContext& context) {
   io::po::options_description desc("gearkit cam options (bare numbers: mm and deg)");
+  io::po::positional_options_description positional;
+  io::add_positional_argument(desc, positional, "file", "FILE", "cam model (YAML, see docs/cam.md)");
   desc.add_options()
-      ("file", io::po::value<std::string>()->required(), "cam model (YAML, see docs/cam.md)")
       ("dxf", io::po::value<std::string>(), "write the cam (profile, pitch curve, base circle, tool path) as DXF R2000")
       ("dxf-lines-arcs", "write LINE and ARC entities instead of LWPOLYLINE bulges (still DXF R2000)")
       ("svg", io::po::value<std::string>(), "write an SVG drawing of the cam and its follower")
@@ -147,8 +148,6 @@ int run_cam_command(plugin::CommandContext& context) {
       ("gcode-form", io::po::value<std::string>(), "xy (2-axis mill, G2/G3 arcs; default) or polar (rotary table: X radius, C angle)")
       ("feed", io::po::value<std::string>(), "G-code feed rate (default 200 mm/min)");
   io::add_common_options(desc);
-  io::po::positional_options_description positional;
-  positional.add("file", 1);
   io::po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, kUsage, context.out)) return 0;
   const Options options = read_options(vm);

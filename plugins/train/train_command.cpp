@@ -385,7 +385,6 @@ void add_assembly(io::Report& report, const gt::TrainModel& model, double tolera
 
 void add_train_options(po::options_description& desc) {
   desc.add_options()
-      ("file", po::value<std::string>()->value_name("FILE"), "train model (YAML, see docs/train.md)")
       ("fix", po::value<std::vector<std::string>>()->value_name("MEMBER"), "hold MEMBER still (repeatable)")
       ("couple", po::value<std::vector<std::string>>()->value_name("A=B"), "members A and B turn together (repeatable)")
       ("input", po::value<std::vector<std::string>>()->value_name("MEMBER[=SPEED]"),
@@ -507,14 +506,12 @@ int run_train_command(plugin::CommandContext& context) {
     return run_train_synth_command(context, {context.args.begin() + 1, context.args.end()});
 
   po::options_description desc("gearkit train options");
-  add_train_options(desc);
   po::positional_options_description positional;
-  positional.add("file", 1);
+  io::add_positional_argument(desc, positional, "file", "FILE", "train model (YAML, see docs/train.md)");
+  add_train_options(desc);
   po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
-  if (!vm.count("file"))
-    throw io::InputError("expected the FILE argument, found none; usage: gearkit train FILE [options] (see --help)");
 
   double default_efficiency = 1.0;
   if (vm.count("mesh-efficiency")) {

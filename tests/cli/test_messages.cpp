@@ -91,6 +91,12 @@ TEST(Messages, OptionsAndArgumentsAreNamedAsTyped) {
                         "option '--speed-plot'");
   expect_one_line_error(run_gearkit("cam"), "expected the FILE argument, found none");
   expect_one_line_error(run_gearkit("train"), "expected the FILE argument, found none");
+  // One wording for a missing positional argument in every command (issue 12: dyn said "missing
+  // the model file", synth "missing the task or its file").
+  expect_one_line_error(run_gearkit("dyn"), "expected the FILE argument, found none");
+  expect_one_line_error(run_gearkit("dyn --format json"), "expected the FILE argument, found none");
+  expect_one_line_error(run_gearkit("synth"), "expected the TASK argument, found none");
+  expect_one_line_error(run_gearkit("synth path"), "expected the FILE argument, found none");
   auto synth = run_gearkit("train synth gearbox --ratio 3");
   expect_one_line_error(synth, "train synth: expected 'reducer' or 'planetary'");
   EXPECT_EQ(synth.err.find("gearkit: gearkit"), std::string::npos) << synth.err;

@@ -193,7 +193,7 @@ TEST(DynCommand, BadInputNamesThePlace) {
   expect_bad_input(run_gearkit("dyn " + shell_quote(write_model("none.yaml", "motor: {speed: 1000 rpm}\n").string())),
                    "at least one question");
   expect_bad_input(run_gearkit("dyn /nonexistent/model.yaml"), "/nonexistent/model.yaml");
-  expect_bad_input(run_gearkit("dyn"), "missing the model file");
+  expect_bad_input(run_gearkit("dyn"), "expected the FILE argument, found none");
 }
 
 TEST(DynCommand, ZeroInertiaIsAnError) {

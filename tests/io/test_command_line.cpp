@@ -114,3 +114,31 @@ TEST(CommandLine, AMissingPositionalArgumentIsNamedAsInTheUsage) {
     EXPECT_EQ(std::string(e.what()), "expected the FILE argument, found none; usage: gearkit test FILE");
   }
 }
+
+TEST(CommandLine, PositionalArgumentsOfTheSharedHelper) {
+  const auto parse_two = [](std::vector<std::string> args, po::variables_map& vm) {
+    po::options_description desc("test");
+    po::positional_options_description pos;
+    add_positional_argument(desc, pos, "task", "TASK", "the task");
+    add_positional_argument(desc, pos, "file", "FILE", "the task file");
+    add_positional_argument(desc, pos, "extra", "EXTRA", "an optional one", false);
+    std::ostringstream out;
+    return parse_command_line(args, desc, pos, vm, "gearkit test TASK FILE [EXTRA]", out);
+  };
+  po::variables_map vm;
+  ASSERT_TRUE(parse_two({"path", "p.yaml"}, vm));
+  EXPECT_EQ(vm["task"].as<std::string>(), "path");
+  EXPECT_EQ(vm["file"].as<std::string>(), "p.yaml");
+  EXPECT_EQ(vm.count("extra"), 0u);
+  for (const auto& [args, message] :
+       {std::pair{std::vector<std::string>{}, "expected the TASK argument, found none; usage: gearkit test TASK FILE [EXTRA]"},
+        std::pair{std::vector<std::string>{"path"}, "expected the FILE argument, found none; usage: gearkit test TASK FILE [EXTRA]"}}) {
+    po::variables_map missing;
+    try {
+      parse_two(args, missing);
+      ADD_FAILURE() << message;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  }
+}

@@ -22,6 +22,13 @@ struct CommonOptions {
 /// Adds --help, --format, --output and --strict to `desc`.
 void add_common_options(po::options_description& desc);
 
+/// Adds a positional argument at the next position: `name` is its key in the variables map
+/// ("file") and, upper-cased, its name in messages. A required one missing from the command line
+/// is refused by parse_command_line with "expected the FILE argument, found none; usage: ...".
+/// @param value_name what --help shows for it ("FILE", "PAIR.yaml").
+void add_positional_argument(po::options_description& desc, po::positional_options_description& positional,
+                             const char* name, const char* value_name, const char* description, bool required = true);
+
 /// Parses `args` (the words after the command name). Returns false if --help was given, after
 /// printing "usage" and `desc` to `out`; the caller then returns 0.
 /// @throws InputError for unknown options, missing values, bad --format, extra words.
