@@ -121,3 +121,29 @@ TEST(OutputFiles, DevicesStayDevicesDashIsStandardOutputAndEmptyIsRefused) {
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg -"),
                  "option '--output': cannot write '-': standard output already receives the output of '--svg'");
 }
+
+TEST(OutputFiles, StandardOutputOpenedOnAnInputIsRefused) {
+  // Issue 11 item C: `gearkit train sp2.yaml 1<>sp2.yaml` exited 0 and wrote the report over the
+  // model (`>>` appended to it). The shell opens standard output before gearkit runs, so the
+  // check is fstat(1) against the input files, before anything is written.
+  auto dir = gearkit::testing::scratch_dir("cli_stdout_input");
+  fs::path train = copy_example(dir, "trains/simple_planetary.yaml");
+  fs::path kin = copy_example(dir, "mechanisms/four_bar.yaml");
+  const std::string train_text = slurp(train), kin_text = slurp(kin);
+  const fs::path err = dir / "err.txt";
+  const auto run = [&](const std::string& args_and_redirection) {
+    const std::string cmd = shell_quote(GEARKIT_EXE) + " " + args_and_redirection + " 2>" + q(err);
+    const int raw = std::system(cmd.c_str());
+    return gearkit::testing::RunResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, "", slurp(err)};
+  };
+  expect_refused(run("train " + q(train) + " 1<>" + q(train)), "standard output is the input file");
+  expect_refused(run("train " + q(train) + " --format json >>" + q(train)), "refusing to write over an input");
+  expect_refused(run("train " + q(train) + " --output - 1<>" + q(train)), "standard output is the input file");
+  expect_refused(run("kin " + q(kin) + " --sweep 0:360:10 1<>" + q(kin)), "standard output is the input file");
+  EXPECT_EQ(slurp(train), train_text);
+  EXPECT_EQ(slurp(kin), kin_text);
+  // Standard output on another file, or the report in a file while stdout is the model: fine.
+  EXPECT_EQ(run("train " + q(train) + " >" + q(dir / "report.txt")).status, 0);
+  EXPECT_EQ(run("train " + q(train) + " --output " + q(dir / "r.txt") + " 1<>" + q(train)).status, 0);
+  EXPECT_EQ(slurp(train), train_text);
+}

@@ -31,6 +31,7 @@ inline constexpr std::string_view kTemporarySuffix = ".gearkit-tmp";
 /// (written directly). An empty path, a folder, a missing folder, a read-only file, a block
 /// device or socket, a file that is also an input (same device and inode, through links) and
 /// a destination named twice are refused when the output is added, before anything is written.
+/// So is "-" when the shell opened standard output on an input file (`1<>model.yaml`, `>>`).
 ///
 /// Regular files are first written in full to a temporary file in the destination's folder;
 /// commit() writes the standard-output and device outputs, then renames each temporary over
