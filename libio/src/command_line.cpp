@@ -22,6 +22,69 @@ void add_common_options(po::options_description& desc) {
       ("strict", "exit with status 3 when the report has warnings");
 }
 
+bool OptionRange::contains(double value) const {
+  const bool above = low_open ? value > low : value >= low;
+  const bool below = high_open ? value < high : value <= high;
+  return above && below;
+}
+
+std::string OptionRange::describe() const {
+  if (!expected.empty()) return std::string(expected);
+  return fmt::format("a value in {}{:g}, {:g}{}", low_open ? '(' : '[', low, high, high_open ? ')' : ']');
+}
+
+namespace {
+
+/// po::value<double> that carries its range for reject_empty_values to check.
+class RangedNumber : public po::typed_value<double> {
+ public:
+  explicit RangedNumber(const OptionRange& range) : po::typed_value<double>(nullptr), range_(range) {}
+  const OptionRange& range() const { return range_; }
+
+ private:
+  OptionRange range_;
+};
+
+}  // namespace
+
+namespace {
+
+/// What is wrong with `value` for an option of range `range` whose quantity has the generic sizes
+/// [smallest, largest] (both in the option's unit), or nothing. A value the option's range takes
+/// but the generic sizes refuse is described by both ("in (0, 1] and at least 1e-15").
+std::optional<std::string> range_problem(double value, const OptionRange& range, double smallest, double largest) {
+  if (!range.contains(value)) return fmt::format("expected {}", range.describe());
+  const double size = std::abs(value);
+  if (size < smallest && size > 0)
+    return fmt::format("expected {} and {} {:g}", range.describe(),
+                       range.contains(0.0) ? "of size 0 or at least" : range.low >= 0 ? "at least" : "of size at least",
+                       smallest);
+  if (size > largest) return fmt::format("expected {} and of size at most {:g}", range.describe(), largest);
+  return std::nullopt;
+}
+
+}  // namespace
+
+po::typed_value<double>* number_in(const OptionRange& range) { return new RangedNumber(range); }
+
+std::optional<double> quantity_option(const po::variables_map& vm, const char* name, Quantity q,
+                                      std::string_view default_unit, const std::optional<OptionRange>& range) {
+  if (!vm.count(name)) return std::nullopt;
+  const std::string option = fmt::format("--{}", name);
+  const std::string& text = vm[name].as<std::string>();
+  try {
+    if (!range) return parse_quantity_si(text, q, default_unit);
+    const double si = parse_quantity_si_any_size(text, q, default_unit);
+    const double factor = default_unit.empty() ? 1.0 : unit_factor_si(default_unit, q);
+    const MagnitudeRange sizes = magnitude_range(q);
+    if (const auto problem = range_problem(si / factor, *range, sizes.smallest / factor, sizes.largest / factor))
+      fail_option(option, fmt::format("{}, found {}", *problem, quote(text)));
+    return si;
+  } catch (const QuantityError& e) {
+    fail_option(option, e.what());
+  }
+}
+
 void add_positional_argument(po::options_description& desc, po::positional_options_description& positional,
                              const char* name, const char* value_name, const char* description, bool required) {
   auto* value = po::value<std::string>()->value_name(value_name);
@@ -101,7 +164,15 @@ void reject_empty_values(const po::variables_map& vm, const po::options_descript
     else if (const auto* v = boost::any_cast<std::vector<std::string>>(&value.value()))
       empty = std::any_of(v->begin(), v->end(), [](const std::string& x) { return x.empty(); });
     if (empty) throw InputError(fmt::format("{}: expected a value, found an empty one", label(name, positionals)));
-    if (const auto* d = boost::any_cast<double>(&value.value())) check_plain_number(*d, label(name, positionals));
+    const auto* d = boost::any_cast<double>(&value.value());
+    if (!d) continue;
+    // An option's own range first, so that the message states it; then the generic sizes.
+    const auto* ranged = option ? dynamic_cast<const RangedNumber*>(option->semantic().get()) : nullptr;
+    const MagnitudeRange sizes = magnitude_range(Quantity::dimensionless);
+    if (ranged && std::isfinite(*d))
+      if (const auto problem = range_problem(*d, ranged->range(), sizes.smallest, sizes.largest))
+        throw InputError(fmt::format("{}: {}, found {:g}", label(name, positionals), *problem, *d));
+    check_plain_number(*d, label(name, positionals));
   }
 }
 

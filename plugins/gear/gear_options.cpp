@@ -1,5 +1,6 @@
 #include "gear_options.hpp"
 
+#include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/quantity.hpp>
 
@@ -205,12 +206,8 @@ void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
     }
     if (o.svg.empty() && o.dxf.empty()) fail("draw", "needs --svg or --dxf");
   }
-  if (given(vm, "tolerance")) {
-    o.tolerance = length_mm(vm, "tolerance");
-    if (!(o.tolerance >= 1e-4 * (1.0 - 1e-9) && o.tolerance <= 1.0)) {
-      fail("tolerance", fmt::format("expected a length from 0.1 um to 1 mm, found {} mm", o.tolerance));
-    }
-  }
+  const io::OptionRange tolerance{1e-4 * (1.0 - 1e-9), 1.0, false, false, "a length from 0.1 um to 1 mm"};
+  if (const auto t = io::quantity_option(vm, "tolerance", io::Quantity::length, "mm", tolerance)) o.tolerance = *t * 1e3;
   if (given(vm, "cutter-teeth")) o.cutter.z_0 = teeth(vm, "cutter-teeth");
   if (given(vm, "cutter-tip-radius")) {
     o.cutter.rho_a0 = length_mm(vm, "cutter-tip-radius");

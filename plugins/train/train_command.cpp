@@ -395,7 +395,7 @@ void add_train_options(po::options_description& desc) {
        "a torque applied to MEMBER (N*m by default); the others follow from equilibrium")
       ("power", po::value<std::string>()->value_name("MEMBER=POWER"), "power fed to MEMBER (W by default)")
       ("rate", po::bool_switch(), "load capacity of every mesh (docs/rating.md; face widths and materials in the file)")
-      ("mesh-efficiency", po::value<double>()->value_name("ETA"),
+      ("mesh-efficiency", io::number_in({0, 1, true, false, "a basic efficiency in (0, 1]"})->value_name("ETA"),
        "basic efficiency eta_0 of the meshes without their own 'efficiency' (default 1)")
       ("modes", "ratio w_out/w_in with each other member held fixed in turn, and with pairs coupled")
       ("willis", po::value<std::string>()->value_name("M1,M2,..."),
@@ -479,16 +479,8 @@ void add_kinematics(io::Report& report, const po::variables_map& vm, const Kinem
 
 /// --centre-tolerance in mm (default 0.001 mm).
 double centre_tolerance_mm(const po::variables_map& vm) {
-  double tolerance_mm = 1e-3;
-  if (vm.count("centre-tolerance")) {
-    try {
-      tolerance_mm = io::parse_quantity_si(vm["centre-tolerance"].as<std::string>(), io::Quantity::length, "mm") * 1e3;
-    } catch (const io::QuantityError& e) {
-      io::fail_option("--centre-tolerance", e.what());
-    }
-    if (!(tolerance_mm >= 0)) io::fail_option("--centre-tolerance", "expected a length >= 0");
-  }
-  return tolerance_mm;
+  const io::OptionRange range{0, 1e7, false, false, "a length from 0 to 10 km"};  // 10 km: the generic limit
+  return io::quantity_option(vm, "centre-tolerance", io::Quantity::length, "mm", range).value_or(1e-6) * 1e3;
 }
 
 /// The input speeds in rad/s when every input has one.
@@ -513,12 +505,7 @@ int run_train_command(plugin::CommandContext& context) {
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
 
-  double default_efficiency = 1.0;
-  if (vm.count("mesh-efficiency")) {
-    default_efficiency = vm["mesh-efficiency"].as<double>();
-    if (!(default_efficiency > 0 && default_efficiency <= 1))
-      io::fail_option("--mesh-efficiency", fmt::format("expected a value in (0, 1], found {}", default_efficiency));
-  }
+  const double default_efficiency = vm.count("mesh-efficiency") ? vm["mesh-efficiency"].as<double>() : 1.0;
   const TrainFile file = load_train_file(vm["file"].as<std::string>(), default_efficiency);
   const gt::TrainModel& model = file.model;
   const Conditions conditions = gather_conditions(model, vm, file.analysis);

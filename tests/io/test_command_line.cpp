@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <sstream>
 
 using namespace gearkit::io;
@@ -141,4 +143,34 @@ TEST(CommandLine, PositionalArgumentsOfTheSharedHelper) {
       EXPECT_EQ(std::string(e.what()), message);
     }
   }
+}
+
+TEST(CommandLine, AnOptionsOwnRangeIsCheckedBeforeTheGenericSizes) {
+  const auto run = [](std::vector<std::string> args) -> std::string {
+    po::options_description desc("test");
+    desc.add_options()("eta", number_in({0, 1, true, false, "an efficiency in (0, 1]"}), "efficiency")(
+        "k", number_in({-2, 2}), "a factor")("gap", po::value<std::string>(), "a length");
+    po::positional_options_description none;
+    po::variables_map vm;
+    std::ostringstream out;
+    try {
+      parse_command_line(args, desc, none, vm, "gearkit test", out);
+      const OptionRange range{0, 1, false, true, "a gap from 0 to 1 mm (not included)"};
+      const auto gap = quantity_option(vm, "gap", Quantity::length, "mm", range);
+      return gap ? fmt::format("{:g}", *gap) : "ok";
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  };
+  EXPECT_EQ(run({"--eta", "0.98", "--k", "-1.5"}), "ok");
+  EXPECT_EQ(run({"--eta", "0"}), "option '--eta': expected an efficiency in (0, 1], found 0");
+  EXPECT_EQ(run({"--eta", "1.5"}), "option '--eta': expected an efficiency in (0, 1], found 1.5");
+  // Inside (0, 1] but below the smallest size of any plain number (quantity.hpp, 1e-15): both said.
+  EXPECT_EQ(run({"--eta", "1e-300"}), "option '--eta': expected an efficiency in (0, 1] and at least 1e-15, found 1e-300");
+  EXPECT_EQ(run({"--k", "3"}), "option '--k': expected a value in [-2, 2], found 3");
+  EXPECT_EQ(run({"--k", "-1e-20"}), "option '--k': expected a value in [-2, 2] and of size 0 or at least 1e-15, found -1e-20");
+  EXPECT_EQ(run({"--gap", "0.5"}), "0.0005");  // SI
+  EXPECT_EQ(run({"--gap", "1 mm"}), "option '--gap': expected a gap from 0 to 1 mm (not included), found '1 mm'");
+  EXPECT_EQ(run({"--gap", "1e300"}), "option '--gap': expected a gap from 0 to 1 mm (not included), found '1e300'");
+  EXPECT_EQ(run({"--gap", "2 deg"}).rfind("option '--gap': expected a length", 0), 0u);
 }

@@ -67,6 +67,11 @@ MagnitudeRange magnitude_range(Quantity q);
 ///         magnitude_range(expected).
 double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit);
 
+/// As parse_quantity_si but without the check against magnitude_range (the value is still finite),
+/// for a caller that checks a narrower range of its own first (io::quantity_option), so that the
+/// message states that range. Anything else should call parse_quantity_si.
+double parse_quantity_si_any_size(std::string_view text, Quantity expected, std::string_view default_unit);
+
 /// The SI factor of a unit expression such as "mm", "rpm" or "kg*m^2", checked against
 /// `expected`. @throws QuantityError as parse_quantity_si.
 double unit_factor_si(std::string_view unit, Quantity expected);
