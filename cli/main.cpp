@@ -5,6 +5,7 @@
 #include "builtin_commands.hpp"
 #include "kin_command.hpp"
 
+#include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/mechanism/reader.hpp>
 #include <gearkit/plugin/plugin_host.hpp>
@@ -153,7 +154,7 @@ po::variables_map parse_global_options(const std::vector<std::string>& args, con
     po::store(po::command_line_parser(args).options(global).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
-    throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", e.what()));
+    throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", gearkit::io::option_error_message(e, global, args)));
   }
   return vm;
 }

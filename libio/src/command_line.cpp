@@ -5,9 +5,12 @@
 
 #include <fmt/format.h>
 
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <ostream>
 
 namespace gearkit::io {
@@ -135,6 +138,48 @@ std::string shorten_quoted_parts(std::string_view message) {
   return out;
 }
 
+/// The value Boost.Program_options quotes in an error about it (its "%value%"), read from the
+/// error's protected substitutions through a pointer to member of a derived class (legal: the
+/// access is checked where the pointer is formed).
+struct ErrorFields : po::error_with_option_name {
+  static std::string value_of(const po::error_with_option_name& e) {
+    const auto& substitutions = e.*(&ErrorFields::m_substitutions);
+    const auto it = substitutions.find("value");
+    return it == substitutions.end() ? std::string() : it->second;
+  }
+};
+
+template <class T>
+bool holds(const po::value_semantic* semantic) {
+  return dynamic_cast<const po::typed_value<T>*>(semantic) != nullptr;
+}
+
+template <class T>
+std::string whole_number_range() {
+  return fmt::format("a whole number from {} to {}", std::numeric_limits<T>::min(), std::numeric_limits<T>::max());
+}
+
+/// What an option of `semantic` takes, for "expected ...": a number, a whole number (with its
+/// bounds when `value` is all digits, so too large), or any value.
+std::string expected_value(const po::value_semantic* semantic, const std::string& value) {
+  if (holds<double>(semantic) || holds<float>(semantic)) return "a number";
+  const bool digits = !value.empty() && value.find_first_not_of("+-0123456789") == std::string::npos;
+  if (holds<int>(semantic)) return digits ? whole_number_range<int>() : "a whole number";
+  if (holds<long>(semantic)) return digits ? whole_number_range<long>() : "a whole number";
+  if (holds<long long>(semantic)) return digits ? whole_number_range<long long>() : "a whole number";
+  if (holds<unsigned>(semantic)) return digits ? whole_number_range<unsigned>() : "a whole number";
+  return "a valid value";
+}
+
+/// How many times `option` ("--fix") is among `args` ("--fix x" or "--fix=x").
+std::size_t occurrences(const std::vector<std::string>& args, const std::string& option) {
+  return static_cast<std::size_t>(std::count_if(args.begin(), args.end(), [&](const std::string& a) {
+    return a == option || a.starts_with(option + "=");
+  }));
+}
+
+std::string dashed(std::string name) { return name.starts_with("-") ? name : "--" + name; }
+
 /// "option '--dxf'" or, for a positional argument, "the FILE argument".
 std::string label(const std::string& name, const std::vector<std::string>& positionals) {
   if (std::find(positionals.begin(), positionals.end(), name) != positionals.end())
@@ -178,6 +223,43 @@ void reject_empty_values(const po::variables_map& vm, const po::options_descript
 
 }  // namespace
 
+std::string option_error_message(const po::error& e, const po::options_description& desc,
+                                 const std::vector<std::string>& args) {
+  const auto* named = dynamic_cast<const po::error_with_option_name*>(&e);
+  if (!named) return shorten_quoted_parts(e.what());
+  const std::string option = named->get_option_name();
+  const std::string where = fmt::format("option {}", quote(option));
+  if (const auto* invalid = dynamic_cast<const po::validation_error*>(&e)) {
+    const std::string value = ErrorFields::value_of(*invalid);
+    const po::option_description* description = desc.find_nothrow(option.substr(option.find_first_not_of('-')), false);
+    if (invalid->kind() == po::validation_error::invalid_option_value && description)
+      return fmt::format("{}: expected {}, found {}", where, expected_value(description->semantic().get(), value),
+                         quote(value));
+    if (invalid->kind() == po::validation_error::invalid_bool_value)
+      return fmt::format("{}: expected true or false, found {}", where, quote(value));
+    if (invalid->kind() == po::validation_error::multiple_values_not_allowed)
+      return fmt::format("{}: expected one value, found several", where);
+  }
+  if (dynamic_cast<const po::multiple_occurrences*>(&e))
+    return fmt::format("{}: expected it once, found it {} times", where, std::max<std::size_t>(2, occurrences(args, option)));
+  if (dynamic_cast<const po::required_option*>(&e)) return fmt::format("{}: expected it (it is required), found none", where);
+  if (dynamic_cast<const po::multiple_values*>(&e)) return fmt::format("{}: expected one value, found several", where);
+  if (dynamic_cast<const po::unknown_option*>(&e))
+    return fmt::format("{}: expected an option listed by --help, found an unknown one", where);
+  if (const auto* ambiguous = dynamic_cast<const po::ambiguous_option*>(&e)) {
+    std::vector<std::string> names;
+    for (const auto& a : ambiguous->alternatives()) names.push_back(quote(dashed(a)));
+    return fmt::format("{}: expected a whole option name, found the beginning of {}", where, fmt::join(names, " and "));
+  }
+  if (const auto* syntax = dynamic_cast<const po::invalid_syntax*>(&e)) {
+    if (syntax->kind() == po::invalid_syntax::missing_parameter)
+      return fmt::format("{}: expected a value, found none", where);
+    if (syntax->kind() == po::invalid_syntax::extra_parameter)
+      return fmt::format("{}: expected no value (it is a switch), found one", where);
+  }
+  return shorten_quoted_parts(e.what());
+}
+
 bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
                         const po::positional_options_description& positional, po::variables_map& vm,
                         std::string_view usage, std::ostream& out) {
@@ -205,9 +287,9 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
       }
       throw InputError(fmt::format("expected the {} argument, found none; usage: {}", upper(name), first_line(usage)));
     }
-    throw InputError(shorten_quoted_parts(e.what()));
+    throw InputError(option_error_message(e, desc, args));
   } catch (const po::error& e) {
-    throw InputError(shorten_quoted_parts(e.what()));
+    throw InputError(option_error_message(e, desc, args));
   }
   reject_empty_values(vm, desc, positionals);
   if (vm.count("format")) parse_format(vm["format"].as<std::string>());

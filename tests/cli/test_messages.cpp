@@ -97,6 +97,17 @@ TEST(Messages, OptionsAndArgumentsAreNamedAsTyped) {
   expect_one_line_error(run_gearkit("dyn --format json"), "expected the FILE argument, found none");
   expect_one_line_error(run_gearkit("synth"), "expected the TASK argument, found none");
   expect_one_line_error(run_gearkit("synth path"), "expected the FILE argument, found none");
+  // Issue 11 item E: Boost's own wording leaked ("the argument ('x') for option ... is invalid").
+  const std::string sp = shell_quote((kExamples / "trains" / "simple_planetary.yaml").string());
+  expect_one_line_error(run_gearkit("train " + sp + " --mesh-efficiency x"),
+                        "option '--mesh-efficiency': expected a number, found 'x'");
+  expect_one_line_error(
+      run_gearkit("synth path " + shell_quote((kExamples / "synthesis" / "path_ellipse.yaml").string()) +
+                  " --evaluations 1e300"),
+      "option '--evaluations': expected a whole number, found '1e300'");
+  expect_one_line_error(run_gearkit("gear --z1 12 --z2 24 --module 3 --centre-distance 55 --center-distance 56"),
+                        "option '--centre-distance': expected it once, found it 2 times");
+  expect_one_line_error(run_gearkit("--frobnicate"), "option '--frobnicate': expected an option listed by --help");
   auto synth = run_gearkit("train synth gearbox --ratio 3");
   expect_one_line_error(synth, "train synth: expected 'reducer' or 'planetary'");
   EXPECT_EQ(synth.err.find("gearkit: gearkit"), std::string::npos) << synth.err;

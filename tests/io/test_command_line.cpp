@@ -174,3 +174,24 @@ TEST(CommandLine, AnOptionsOwnRangeIsCheckedBeforeTheGenericSizes) {
   EXPECT_EQ(run({"--gap", "1e300"}), "option '--gap': expected a gap from 0 to 1 mm (not included), found '1e300'");
   EXPECT_EQ(run({"--gap", "2 deg"}).rfind("option '--gap': expected a length", 0), 0u);
 }
+
+// Issue 11 item E: Boost.Program_options' own wording ("the argument ('x') for option '--eta' is
+// invalid", "cannot be specified more than once") reached the user; every option error now has
+// the documented form "option '--x': expected ..., found ...".
+TEST(CommandLine, BoostErrorsAreSaidInTheDocumentedForm) {
+  EXPECT_EQ(error_of({"a.yaml", "--eta", "x"}), "option '--eta': expected a number, found 'x'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "1e300"}), "option '--z1': expected a whole number, found '1e300'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "1.5"}), "option '--z1': expected a whole number, found '1.5'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "99999999999"}),
+            "option '--z1': expected a whole number from -2147483648 to 2147483647, found '99999999999'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "12", "--z1=13"}), "option '--z1': expected it once, found it 2 times");
+  EXPECT_EQ(error_of({"a.yaml", "--svg", "a.svg", "--svg", "b.svg", "--svg", "c.svg"}),
+            "option '--svg': expected it once, found it 3 times");
+  EXPECT_EQ(error_of({"a.yaml", "--frobnicate"}), "option '--frobnicate': expected an option listed by --help, found an unknown one");
+  EXPECT_EQ(error_of({"a.yaml", "--z1"}), "option '--z1': expected a value, found none");
+  EXPECT_EQ(error_of({"a.yaml", "--strict=yes"}), "option '--strict': expected no value (it is a switch), found one");
+  const std::string ambiguous = error_of({"a.yaml", "--s", "x"});
+  EXPECT_EQ(ambiguous.rfind("option '--s': expected a whole option name, found the beginning of ", 0), 0u) << ambiguous;
+  EXPECT_NE(ambiguous.find("'--svg'"), std::string::npos) << ambiguous;
+  EXPECT_NE(ambiguous.find("'--strict'"), std::string::npos) << ambiguous;
+}

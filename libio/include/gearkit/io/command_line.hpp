@@ -66,6 +66,13 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
                         const po::positional_options_description& positional, po::variables_map& vm,
                         std::string_view usage, std::ostream& out);
 
+/// Boost.Program_options' error `e` from parsing `args` against `desc`, in the documented form
+/// "option '--x': expected ..., found ..." (docs/cli.md, "Messages and exit status"): a value of
+/// the wrong type, an option given twice, an unknown, ambiguous or misused option. Other errors
+/// keep Boost's wording, shortened to one line. parse_command_line uses it for every command.
+std::string option_error_message(const po::error& e, const po::options_description& desc,
+                                 const std::vector<std::string>& args);
+
 /// The common options from a parsed command line.
 CommonOptions common_options(const po::variables_map& vm);
 
