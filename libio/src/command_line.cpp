@@ -316,6 +316,11 @@ int emit(const Report& report, const CommonOptions& options, OutputSet& outputs)
     warn_non_finite(named);
     checked = &named;
   }
+  // The report goes to standard output unless --output says otherwise: another output sent
+  // there ("--svg -") is the one to blame, not the --output the user may never have typed.
+  if (const auto other = outputs.standard_output_option(); other && options.output == "-")
+    fail_option(*other, "cannot write '-': standard output receives the report; give --output FILE to write the "
+                        "report elsewhere");
   outputs.add("--output", options.output, render(*checked, options.format));
   outputs.commit();
   return exit_status(*checked, options);

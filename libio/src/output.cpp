@@ -340,6 +340,12 @@ OutputSet::Output& OutputSet::add_output(std::string_view option, const std::str
   return *outputs_.back();
 }
 
+std::optional<std::string> OutputSet::standard_output_option() const {
+  for (const auto& out : outputs_)
+    if (out->kind == Kind::standard_output) return out->option;
+  return std::nullopt;
+}
+
 void OutputSet::add(std::string_view option, const std::string& path, std::string_view content) {
   Output& out = add_output(option, path);
   if (out.kind == Kind::file) out.stream->write(content.data(), static_cast<std::streamsize>(content.size()));

@@ -108,6 +108,9 @@ TEST(Messages, OptionsAndArgumentsAreNamedAsTyped) {
   expect_one_line_error(run_gearkit("gear --z1 12 --z2 24 --module 3 --centre-distance 55 --center-distance 56"),
                         "option '--centre-distance': expected it once, found it 2 times");
   expect_one_line_error(run_gearkit("--frobnicate"), "option '--frobnicate': expected an option listed by --help");
+  // Issue 11 item F: a bad --z1 was reported as a missing --z2.
+  expect_one_line_error(run_gearkit("gear --z1 x"), "option '--z1': expected a whole number of teeth, found 'x'");
+  expect_one_line_error(run_gearkit("gear --z1 12 --module 3"), "option '--z2': expected the teeth of gear 2, found none");
   auto synth = run_gearkit("train synth gearbox --ratio 3");
   expect_one_line_error(synth, "train synth: expected 'reducer' or 'planetary'");
   EXPECT_EQ(synth.err.find("gearkit: gearkit"), std::string::npos) << synth.err;

@@ -118,8 +118,14 @@ TEST(OutputFiles, DevicesStayDevicesDashIsStandardOutputAndEmptyIsRefused) {
   EXPECT_FALSE(fs::exists("-"));
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --output ''"), "option '--output': expected a value");
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg ''"), "option '--svg': expected a value");
+  // Issue 11 item F: the refusal blamed '--output', which the user had not typed.
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg -"),
-                 "option '--output': cannot write '-': standard output already receives the output of '--svg'");
+                 "option '--svg': cannot write '-': standard output receives the report; give --output FILE");
+  expect_refused(run_gearkit("cam " + q(kExamples / "cams" / "translating_roller_cycloidal.yaml") + " --svg -"),
+                 "option '--svg': cannot write '-': standard output receives the report");
+  auto svg_to_stdout = run_gearkit("gear --z1 12 --z2 24 --module 3 --svg - --output /dev/null");
+  EXPECT_EQ(svg_to_stdout.status, 0) << svg_to_stdout.err;
+  EXPECT_EQ(svg_to_stdout.out.rfind("<?xml", 0), 0u) << svg_to_stdout.out.substr(0, 200);
 }
 
 TEST(OutputFiles, StandardOutputOpenedOnAnInputIsRefused) {

@@ -5,6 +5,7 @@
 // guarantees for users.
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,6 +60,9 @@ class OutputSet {
   /// the set is destroyed; commit() puts it in place. Write errors surface in commit().
   /// @throws InputError as add().
   std::ostream& stream(std::string_view option, const std::string& path);
+
+  /// The option of the output that goes to standard output ("-"), if one does.
+  std::optional<std::string> standard_output_option() const;
 
   /// Puts every output in place; afterwards the set is empty.
   /// @throws InputError when a write fails (disk full, device error); regular-file outputs are
