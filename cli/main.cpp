@@ -5,6 +5,7 @@
 #include "builtin_commands.hpp"
 #include "kin_command.hpp"
 
+#include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/mechanism/reader.hpp>
 #include <gearkit/plugin/plugin_host.hpp>
@@ -122,42 +123,46 @@ void print_help(std::ostream& out, const po::options_description& global, const 
          "Exit status: 0 success, 2 bad input or usage, 3 warnings under --strict, 1 internal failure.\n";
 }
 
-int run(int argc, char** argv) {
-  // Global options stop at the command word: everything after it belongs to the command, so
-  // `gearkit gear --help` is the gear command's help, not the tool's.
+/// The words of the command line split at the command word: global options before it, the
+/// command's own words after it (so `gearkit gear --help` is the gear command's help).
+struct CommandLine {
   std::vector<std::string> global_args, command_args;
   std::string command;
+};
+
+CommandLine split_command_line(int argc, char** argv) {
+  CommandLine line;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    if (command.empty() && (a == "--plugin") && i + 1 < argc) {
-      global_args.push_back(a);
-      global_args.push_back(argv[++i]);
-    } else if (command.empty() && !a.empty() && a[0] == '-') {
-      global_args.push_back(a);
-    } else if (command.empty()) {
-      command = a;
+    if (line.command.empty() && (a == "--plugin") && i + 1 < argc) {
+      line.global_args.push_back(a);
+      line.global_args.push_back(argv[++i]);
+    } else if (line.command.empty() && !a.empty() && a[0] == '-') {
+      line.global_args.push_back(a);
+    } else if (line.command.empty()) {
+      line.command = a;
     } else {
-      command_args.push_back(a);
+      line.command_args.push_back(a);
     }
   }
+  return line;
+}
 
-  po::options_description global("Global options");
-  global.add_options()("help,h", "show this help and exit")("version", "show the version and exit")(
-      "plugin", po::value<std::vector<std::string>>()->value_name("FILE"),
-      "also load this plugin file (an error if it cannot be loaded)");
+po::variables_map parse_global_options(const std::vector<std::string>& args, const po::options_description& global) {
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(global_args).options(global).run(), vm);
+    po::store(po::command_line_parser(args).options(global).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
-    throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", e.what()));
+    throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", gearkit::io::option_error_message(e, global, args)));
   }
-  if (vm.count("version")) {
-    std::cout << "gearkit " << GEARKIT_VERSION_STRING << " (plugin API " << plugin::kApiVersion << ")\n";
-    return 0;
-  }
+  return vm;
+}
 
-  plugin::PluginHost host(builtin_names());
+/// Loads the plugins of --plugin (an error if one fails) and of the default locations (a
+/// warning line each, except for `plugins`, whose job is to say so).
+std::vector<std::filesystem::path> load_plugins(plugin::PluginHost& host, const po::variables_map& vm,
+                                                const std::string& command) {
   if (vm.count("plugin")) {
     for (const auto& f : vm["plugin"].as<std::vector<std::string>>()) {
       try {
@@ -167,31 +172,19 @@ int run(int argc, char** argv) {
       }
     }
   }
-  const auto locations = plugin::default_plugin_locations(plugin::current_executable());
+  auto locations = plugin::default_plugin_locations(plugin::current_executable());
   host.load_all(locations);
   // A plugin that fails to load costs every command but `plugins` one warning line, and only
   // that (docs/design.md, "Plugins"); `plugins`, whose job is to say so, exits 2 (after dispatch).
   if (command != "plugins")
     for (const auto& e : host.failures())
       print_diagnostic(std::cerr, fmt::format("warning: {} (not loaded)", e.what()));
+  return locations;
+}
 
-  if (vm.count("help") || command.empty()) {
-    if (command.empty() && !vm.count("help"))
-      throw gearkit::io::InputError("expected a command; see 'gearkit --help'");
-    print_help(std::cout, global, host);
-    return 0;
-  }
-
-  if (command == "help") {
-    if (command_args.empty()) {
-      print_help(std::cout, global, host);
-      return 0;
-    }
-    command = command_args.front();
-    command_args = {"--help"};
-  }
-
-  plugin::CommandContext context{command_args, std::cout, std::cerr, host};
+/// Runs a built-in or plugin command.
+int dispatch(const std::string& command, plugin::CommandContext& context, const plugin::PluginHost& host,
+             const std::vector<std::filesystem::path>& locations) {
   if (command == "plugins") {
     const int status = cli::run_plugins_command(context, host, locations);
     const auto& failures = host.failures();
@@ -210,6 +203,38 @@ int run(int argc, char** argv) {
   std::sort(names.begin(), names.end());
   throw gearkit::io::InputError(
       fmt::format("unknown command {}; expected one of: {}", gearkit::io::quote(command), fmt::join(names, ", ")));
+}
+
+int run(int argc, char** argv) {
+  CommandLine line = split_command_line(argc, argv);
+  po::options_description global("Global options");
+  global.add_options()("help,h", "show this help and exit")("version", "show the version and exit")(
+      "plugin", po::value<std::vector<std::string>>()->value_name("FILE"),
+      "also load this plugin file (an error if it cannot be loaded)");
+  const po::variables_map vm = parse_global_options(line.global_args, global);
+  if (vm.count("version")) {
+    std::cout << "gearkit " << GEARKIT_VERSION_STRING << " (plugin API " << plugin::kApiVersion << ")\n";
+    return 0;
+  }
+
+  plugin::PluginHost host(builtin_names());
+  const std::vector<std::filesystem::path> locations = load_plugins(host, vm, line.command);
+  if (vm.count("help") || line.command.empty()) {
+    if (line.command.empty() && !vm.count("help"))
+      throw gearkit::io::InputError("expected a command; see 'gearkit --help'");
+    print_help(std::cout, global, host);
+    return 0;
+  }
+  if (line.command == "help") {
+    if (line.command_args.empty()) {
+      print_help(std::cout, global, host);
+      return 0;
+    }
+    line.command = line.command_args.front();
+    line.command_args = {"--help"};
+  }
+  plugin::CommandContext context{line.command_args, std::cout, std::cerr, host};
+  return dispatch(line.command, context, host, locations);
 }
 
 }  // namespace

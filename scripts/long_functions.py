@@ -16,15 +16,23 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SOURCE_DIRS = ("bench", "cli", "libcam", "libdyn", "libgear", "libio", "libkin", "libmechanism", "libplugin",
-               "libtrain", "plugins", "tests", "examples")
+# Top-level folders that hold no project source: build trees (any name starting "build"),
+# version control and documentation. Every other folder is scanned, so a new library
+# (libfoo/) is checked from its first file.
+SKIPPED_DIRS = (".git", ".ci", "cmake", "docs", "scripts")
+
+
+def source_dirs(root):
+    return sorted(d for d in os.listdir(root)
+                  if os.path.isdir(os.path.join(root, d)) and d not in SKIPPED_DIRS and not d.startswith("build"))
 
 
 def source_files(root):
     files = []
-    for top in SOURCE_DIRS:
-        for folder, _, names in os.walk(os.path.join(root, top)):
-            files += [os.path.join(folder, n) for n in names if n.endswith((".cpp", ".hpp"))]
+    for top in source_dirs(root):
+        for folder, subfolders, names in os.walk(os.path.join(root, top)):
+            subfolders[:] = [d for d in subfolders if not d.startswith("build")]
+            files += [os.path.join(folder, n) for n in names if n.endswith((".cpp", ".hpp", ".h", ".cc"))]
     return sorted(files)
 
 

@@ -123,7 +123,6 @@ PiecewiseLinear PiecewiseLinear::stretched(double k) const {
   return PiecewiseLinear(std::move(x), y_, periodic_);
 }
 
-double PiecewiseLinear::min_value() const { return *std::min_element(y_.begin(), y_.end()); }
 double PiecewiseLinear::max_value() const { return *std::max_element(y_.begin(), y_.end()); }
 
 PiecewiseLinear sample(const std::function<double(double)>& f, double x0, double x1, int n, bool periodic) {

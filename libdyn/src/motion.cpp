@@ -72,7 +72,9 @@ AccelerationLaw acceleration_law(ReducedSystem system) {
   };
 }
 
-MotionResult integrate_motion(const AccelerationLaw& law, double theta0, double omega0, const MotionOptions& options) {
+namespace {
+
+void check_motion_options(const MotionOptions& options, double theta0, double omega0) {
   if (!(options.t_end > 0) || !std::isfinite(options.t_end))
     throw std::invalid_argument("motion: end time must be > 0 s, found " + num(options.t_end));
   if (options.output_step < 0 || options.max_step < 0 || options.cycle < 0)
@@ -82,118 +84,173 @@ MotionResult integrate_motion(const AccelerationLaw& law, double theta0, double 
   if (options.max_steps < 1) throw std::invalid_argument("motion: the step limit must be at least 1");
   if (!std::isfinite(theta0) || !std::isfinite(omega0))
     throw std::invalid_argument("motion: the initial state is not finite");
-  const double output_step = options.output_step > 0 ? options.output_step : options.t_end / 2000;
-  const double max_step = options.max_step > 0 ? options.max_step : output_step;
-  const double cycle = options.cycle > 0 ? options.cycle : 2 * std::numbers::pi;
+}
 
-  MotionResult result;
-  const auto sample_at = [&law](double t, const State& x) { return MotionSample{t, x[0], x[1], law(t, x[0], x[1])}; };
-  const State x0{theta0, omega0};
-  result.samples.push_back(sample_at(0, x0));
-  if (omega0 == 0 && !(result.samples.back().alpha > 0)) {
-    result.cannot_start = true;
-    return result;
+using Stepper = decltype(odeint::make_dense_output(1.0, 1.0, 1.0, odeint::runge_kutta_dopri5<State>()));
+
+/// One integration in progress: the dense-output stepper, the cycle being measured and the
+/// result so far. Each step() advances one adaptive step and handles what happened inside it,
+/// in time order: a stall, speed extremes, cycle ends (steady state), output samples.
+class Integration {
+ public:
+  Integration(const AccelerationLaw& law, const MotionOptions& options, double theta0, double omega0)
+      : law_(law),
+        options_(options),
+        output_step_(options.output_step > 0 ? options.output_step : options.t_end / 2000),
+        cycle_(options.cycle > 0 ? options.cycle : 2 * std::numbers::pi),
+        stepper_(odeint::make_dense_output(options.abs_tolerance, options.rel_tolerance,
+                                           options.max_step > 0 ? options.max_step : output_step_,
+                                           odeint::runge_kutta_dopri5<State>())),
+        next_cycle_theta_(theta0 + cycle_),
+        cycle_max_(omega0),
+        cycle_min_(omega0),
+        started_(omega0 > 0) {
+    const double max_step = options.max_step > 0 ? options.max_step : output_step_;
+    stepper_.initialize(State{theta0, omega0}, 0.0, std::min(max_step, options.t_end) / 100);
   }
 
-  const auto system = [&law](const State& x, State& dxdt, double t) {
-    dxdt[0] = x[1];
-    dxdt[1] = law(t, x[0], x[1]);
-  };
-  auto stepper = odeint::make_dense_output(options.abs_tolerance, options.rel_tolerance, max_step,
-                                           odeint::runge_kutta_dopri5<State>());
-  stepper.initialize(x0, 0.0, std::min(max_step, options.t_end) / 100);
+  /// Advances one step; returns true when the integration is over.
+  bool step() {
+    const auto system = [this](const State& x, State& dxdt, double t) {
+      dxdt[0] = x[1];
+      dxdt[1] = law_(t, x[0], x[1]);
+    };
+    stepper_.do_step(system);
+    ++work_;
+    const double t0 = stepper_.previous_time();
+    double stop_time = stall(t0, std::min(stepper_.current_time(), options_.t_end));
+    const double t_extreme = speed_extreme(t0, stop_time);
+    const double t_cursor = cycle_ends(t0, t_extreme, stop_time);
+    if (t_extreme >= t_cursor && t_extreme <= stop_time) note_speed(state_at(t_extreme)[1]);
+    note_speed(state_at(stop_time)[1]);
+    for (double t = static_cast<double>(output_index_) * output_step_; t < stop_time;
+         t = static_cast<double>(++output_index_) * output_step_)
+      result_.samples.push_back(sample_at(t, state_at(t)));
+    if (stop_time >= options_.t_end) finished_ = true;
+    if (!finished_ && work_ >= options_.max_steps) {
+      result_.step_limit_reached = true;
+      finished_ = true;
+    }
+    if (finished_) {
+      State x = state_at(stop_time);
+      if (result_.stalled) x[1] = 0;
+      result_.samples.push_back(sample_at(stop_time, x));
+    }
+    return finished_;
+  }
 
-  long output_index = 1;
-  double next_cycle_theta = theta0 + cycle;
-  double last_cycle_time = 0;
-  double cycle_max = omega0, cycle_min = omega0;
-  bool started = omega0 > 0;
-  State x{};
-  const auto state_at = [&stepper](double t) {
+  MotionResult take_result() { return std::move(result_); }
+  MotionResult& result() { return result_; }
+
+  MotionSample sample_at(double t, const State& x) const { return MotionSample{t, x[0], x[1], law_(t, x[0], x[1])}; }
+
+ private:
+  State state_at(double t) {
     State s{};
-    stepper.calc_state(t, s);
+    stepper_.calc_state(t, s);
     return s;
-  };
+  }
 
-  bool finished = false;
-  long work = 0;  // steps plus completed cycles, bounded by options.max_steps
-  while (!finished) {
-    stepper.do_step(system);
-    ++work;
-    const double t0 = stepper.previous_time();
-    const double t1 = std::min(stepper.current_time(), options.t_end);
-    const State s0 = state_at(t0);
+  void note_speed(double w) {
+    cycle_max_ = std::max(cycle_max_, w);
+    cycle_min_ = std::min(cycle_min_, w);
+  }
+
+  /// The end of the step [t0, t1], earlier when the speed falls back to zero inside it: the
+  /// machine stalls (it would not run backwards).
+  double stall(double t0, double t1) {
     const State s1 = state_at(t1);
     double stop_time = t1;
-
-    // A speed that falls back to zero: the machine stalls (it would not run backwards).
-    if (started && s1[1] <= 0) {
+    if (started_ && s1[1] <= 0) {
       stop_time = bisect([&](double t) { return state_at(t)[1]; }, t0, t1);
-      result.stalled = true;
-      result.stall_time = stop_time;
-      finished = true;
+      result_.stalled = true;
+      result_.stall_time = stop_time;
+      finished_ = true;
     }
-    if (s1[1] > 0) started = true;
+    if (s1[1] > 0) started_ = true;
+    return stop_time;
+  }
 
-    // Events inside the step, in time order: speed extremes (alpha = 0) and cycle ends.
-    const double alpha0 = law(t0, s0[0], s0[1]);
-    const double alpha1 = law(stop_time, state_at(stop_time)[0], state_at(stop_time)[1]);
-    double t_extreme = -1;
-    if ((alpha0 > 0) != (alpha1 > 0))
-      t_extreme = bisect([&](double t) { const State s = state_at(t); return law(t, s[0], s[1]); }, t0, stop_time);
-    const auto note_speed = [&](double w) {
-      cycle_max = std::max(cycle_max, w);
-      cycle_min = std::min(cycle_min, w);
-    };
+  /// The time of a speed extreme (alpha = 0) in [t0, t1], or -1.
+  double speed_extreme(double t0, double t1) {
+    const State s0 = state_at(t0), s1 = state_at(t1);
+    const double alpha0 = law_(t0, s0[0], s0[1]);
+    const double alpha1 = law_(t1, s1[0], s1[1]);
+    if ((alpha0 > 0) == (alpha1 > 0)) return -1;
+    return bisect([&](double t) { const State s = state_at(t); return law_(t, s[0], s[1]); }, t0, t1);
+  }
+
+  /// Closes every cycle that ends before stop_time (which a steady state or the step limit may
+  /// bring forward); returns the end of the last one (t0 if none).
+  double cycle_ends(double t0, double t_extreme, double& stop_time) {
     double t_cursor = t0;
-    bool stop_events = false;
-    while (!stop_events && state_at(stop_time)[0] >= next_cycle_theta) {
-      if (++work > options.max_steps) {
-        result.step_limit_reached = true;
-        finished = stop_events = true;
+    while (state_at(stop_time)[0] >= next_cycle_theta_) {
+      if (++work_ > options_.max_steps) {
+        result_.step_limit_reached = true;
+        finished_ = true;
         stop_time = t_cursor;
-        break;
+        return t_cursor;
       }
-      const double target = next_cycle_theta;
+      const double target = next_cycle_theta_;
       const double tc = bisect([&](double t) { return state_at(t)[0] - target; }, t_cursor, stop_time);
       if (t_extreme >= t_cursor && t_extreme <= tc) note_speed(state_at(t_extreme)[1]);
-      const double wc = state_at(tc)[1];
-      note_speed(wc);
-      result.cycle_end_times.push_back(tc);
-      result.cycle_mean_speed.push_back(cycle / (tc - last_cycle_time));
-      result.cycle_max_speed.push_back(cycle_max);
-      result.cycle_min_speed.push_back(cycle_min);
-      cycle_max = cycle_min = wc;
-      last_cycle_time = tc;
-      next_cycle_theta += cycle;
+      close_cycle(tc);
       t_cursor = tc;
-      if (!result.steady && settled(result.cycle_mean_speed, options.steady_tolerance)) {
-        result.steady = true;
-        result.steady_time = tc;
-        if (options.stop_when_steady) {
+      if (!result_.steady && settled(result_.cycle_mean_speed, options_.steady_tolerance)) {
+        result_.steady = true;
+        result_.steady_time = tc;
+        if (options_.stop_when_steady) {
           stop_time = tc;
-          finished = stop_events = true;
+          finished_ = true;
+          return t_cursor;
         }
       }
     }
-    if (t_extreme >= t_cursor && t_extreme <= stop_time) note_speed(state_at(t_extreme)[1]);
-    note_speed(state_at(stop_time)[1]);
-
-    for (double t = static_cast<double>(output_index) * output_step; t < stop_time;
-         t = static_cast<double>(++output_index) * output_step)
-      result.samples.push_back(sample_at(t, state_at(t)));
-    if (stop_time >= options.t_end) finished = true;
-    if (!finished && work >= options.max_steps) {
-      result.step_limit_reached = true;
-      finished = true;
-    }
-    if (finished) {
-      x = state_at(stop_time);
-      if (result.stalled) x[1] = 0;
-      result.samples.push_back(sample_at(stop_time, x));
-    }
+    return t_cursor;
   }
-  return result;
+
+  /// Records the cycle that ends at tc and starts the next one.
+  void close_cycle(double tc) {
+    const double wc = state_at(tc)[1];
+    note_speed(wc);
+    result_.cycle_end_times.push_back(tc);
+    result_.cycle_mean_speed.push_back(cycle_ / (tc - last_cycle_time_));
+    result_.cycle_max_speed.push_back(cycle_max_);
+    result_.cycle_min_speed.push_back(cycle_min_);
+    cycle_max_ = cycle_min_ = wc;
+    last_cycle_time_ = tc;
+    next_cycle_theta_ += cycle_;
+  }
+
+  const AccelerationLaw& law_;
+  const MotionOptions& options_;
+  const double output_step_;
+  const double cycle_;
+  Stepper stepper_;
+  MotionResult result_;
+  long output_index_ = 1;
+  long work_ = 0;  // steps plus completed cycles, bounded by options.max_steps
+  double next_cycle_theta_;
+  double last_cycle_time_ = 0;
+  double cycle_max_, cycle_min_;
+  bool started_;
+  bool finished_ = false;
+};
+
+}  // namespace
+
+MotionResult integrate_motion(const AccelerationLaw& law, double theta0, double omega0, const MotionOptions& options) {
+  check_motion_options(options, theta0, omega0);
+  Integration integration(law, options, theta0, omega0);
+  MotionResult& result = integration.result();
+  result.samples.push_back(integration.sample_at(0, State{theta0, omega0}));
+  if (omega0 == 0 && !(result.samples.back().alpha > 0)) {
+    result.cannot_start = true;
+    return integration.take_result();
+  }
+  while (!integration.step()) {
+  }
+  return integration.take_result();
 }
 
 std::optional<double> time_to_reach(const MotionResult& result, double omega) {

@@ -6,10 +6,13 @@
 
 #include <fmt/format.h>
 
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <ostream>
 
 namespace gearkit::io {
@@ -26,6 +29,77 @@ void add_common_options(po::options_description& desc) {
       ("strict", "exit with status 3 when the report has warnings");
 }
 
+bool OptionRange::contains(double value) const {
+  const bool above = low_open ? value > low : value >= low;
+  const bool below = high_open ? value < high : value <= high;
+  return above && below;
+}
+
+std::string OptionRange::describe() const {
+  if (!expected.empty()) return std::string(expected);
+  return fmt::format("a value in {}{:g}, {:g}{}", low_open ? '(' : '[', low, high, high_open ? ')' : ']');
+}
+
+namespace {
+
+/// po::value<double> that carries its range for reject_empty_values to check.
+class RangedNumber : public po::typed_value<double> {
+ public:
+  explicit RangedNumber(const OptionRange& range) : po::typed_value<double>(nullptr), range_(range) {}
+  const OptionRange& range() const { return range_; }
+
+ private:
+  OptionRange range_;
+};
+
+}  // namespace
+
+namespace {
+
+/// What is wrong with `value` for an option of range `range` whose quantity has the generic sizes
+/// [smallest, largest] (both in the option's unit), or nothing. A value the option's range takes
+/// but the generic sizes refuse is described by both ("in (0, 1] and at least 1e-15").
+std::optional<std::string> range_problem(double value, const OptionRange& range, double smallest, double largest) {
+  if (!range.contains(value)) return fmt::format("expected {}", range.describe());
+  const double size = std::abs(value);
+  if (size < smallest && size > 0)
+    return fmt::format("expected {} and {} {:g}", range.describe(),
+                       range.contains(0.0) ? "of size 0 or at least" : range.low >= 0 ? "at least" : "of size at least",
+                       smallest);
+  if (size > largest) return fmt::format("expected {} and of size at most {:g}", range.describe(), largest);
+  return std::nullopt;
+}
+
+}  // namespace
+
+po::typed_value<double>* number_in(const OptionRange& range) { return new RangedNumber(range); }
+
+std::optional<double> quantity_option(const po::variables_map& vm, const char* name, Quantity q,
+                                      std::string_view default_unit, const std::optional<OptionRange>& range) {
+  if (!vm.count(name)) return std::nullopt;
+  const std::string option = fmt::format("--{}", name);
+  const std::string& text = vm[name].as<std::string>();
+  try {
+    if (!range) return parse_quantity_si(text, q, default_unit);
+    const double si = parse_quantity_si_any_size(text, q, default_unit);
+    const double factor = default_unit.empty() ? 1.0 : unit_factor_si(default_unit, q);
+    const MagnitudeRange sizes = magnitude_range(q);
+    if (const auto problem = range_problem(si / factor, *range, sizes.smallest / factor, sizes.largest / factor))
+      fail_option(option, fmt::format("{}, found {}", *problem, quote(text)));
+    return si;
+  } catch (const QuantityError& e) {
+    fail_option(option, e.what());
+  }
+}
+
+void add_positional_argument(po::options_description& desc, po::positional_options_description& positional,
+                             const char* name, const char* value_name, const char* description, bool required) {
+  auto* value = po::value<std::string>()->value_name(value_name);
+  if (required) value->required();
+  desc.add_options()(name, value, description);
+  positional.add(name, 1);
+}
+
 namespace {
 
 /// The names of the positional arguments ("file"), in order.
@@ -38,6 +112,9 @@ std::vector<std::string> positional_names(const po::positional_options_descripti
   }
   return names;
 }
+
+/// A usage of several lines (a command and its subcommands) is quoted in a message by its first.
+std::string_view first_line(std::string_view usage) { return usage.substr(0, usage.find('\n')); }
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -64,6 +141,48 @@ std::string shorten_quoted_parts(std::string_view message) {
   }
   return out;
 }
+
+/// The value Boost.Program_options quotes in an error about it (its "%value%"), read from the
+/// error's protected substitutions through a pointer to member of a derived class (legal: the
+/// access is checked where the pointer is formed).
+struct ErrorFields : po::error_with_option_name {
+  static std::string value_of(const po::error_with_option_name& e) {
+    const auto& substitutions = e.*(&ErrorFields::m_substitutions);
+    const auto it = substitutions.find("value");
+    return it == substitutions.end() ? std::string() : it->second;
+  }
+};
+
+template <class T>
+bool holds(const po::value_semantic* semantic) {
+  return dynamic_cast<const po::typed_value<T>*>(semantic) != nullptr;
+}
+
+template <class T>
+std::string whole_number_range() {
+  return fmt::format("a whole number from {} to {}", std::numeric_limits<T>::min(), std::numeric_limits<T>::max());
+}
+
+/// What an option of `semantic` takes, for "expected ...": a number, a whole number (with its
+/// bounds when `value` is all digits, so too large), or any value.
+std::string expected_value(const po::value_semantic* semantic, const std::string& value) {
+  if (holds<double>(semantic) || holds<float>(semantic)) return "a number";
+  const bool digits = !value.empty() && value.find_first_not_of("+-0123456789") == std::string::npos;
+  if (holds<int>(semantic)) return digits ? whole_number_range<int>() : "a whole number";
+  if (holds<long>(semantic)) return digits ? whole_number_range<long>() : "a whole number";
+  if (holds<long long>(semantic)) return digits ? whole_number_range<long long>() : "a whole number";
+  if (holds<unsigned>(semantic)) return digits ? whole_number_range<unsigned>() : "a whole number";
+  return "a valid value";
+}
+
+/// How many times `option` ("--fix") is among `args` ("--fix x" or "--fix=x").
+std::size_t occurrences(const std::vector<std::string>& args, const std::string& option) {
+  return static_cast<std::size_t>(std::count_if(args.begin(), args.end(), [&](const std::string& a) {
+    return a == option || a.starts_with(option + "=");
+  }));
+}
+
+std::string dashed(std::string name) { return name.starts_with("-") ? name : "--" + name; }
 
 /// "option '--dxf'" or, for a positional argument, "the FILE argument".
 std::string label(const std::string& name, const std::vector<std::string>& positionals) {
@@ -94,11 +213,56 @@ void reject_empty_values(const po::variables_map& vm, const po::options_descript
     else if (const auto* v = boost::any_cast<std::vector<std::string>>(&value.value()))
       empty = std::any_of(v->begin(), v->end(), [](const std::string& x) { return x.empty(); });
     if (empty) throw InputError(fmt::format("{}: expected a value, found an empty one", label(name, positionals)));
-    if (const auto* d = boost::any_cast<double>(&value.value())) check_plain_number(*d, label(name, positionals));
+    const auto* d = boost::any_cast<double>(&value.value());
+    if (!d) continue;
+    // An option's own range first, so that the message states it; then the generic sizes.
+    const auto* ranged = option ? dynamic_cast<const RangedNumber*>(option->semantic().get()) : nullptr;
+    const MagnitudeRange sizes = magnitude_range(Quantity::dimensionless);
+    if (ranged && std::isfinite(*d))
+      if (const auto problem = range_problem(*d, ranged->range(), sizes.smallest, sizes.largest))
+        throw InputError(fmt::format("{}: {}, found {:g}", label(name, positionals), *problem, *d));
+    check_plain_number(*d, label(name, positionals));
   }
 }
 
 }  // namespace
+
+std::string option_error_message(const po::error& e, const po::options_description& desc,
+                                 const std::vector<std::string>& args) {
+  const auto* named = dynamic_cast<const po::error_with_option_name*>(&e);
+  if (!named) return shorten_quoted_parts(e.what());
+  const std::string option = named->get_option_name();
+  const std::string where = fmt::format("option {}", quote(option));
+  if (const auto* invalid = dynamic_cast<const po::validation_error*>(&e)) {
+    const std::string value = ErrorFields::value_of(*invalid);
+    const po::option_description* description = desc.find_nothrow(option.substr(option.find_first_not_of('-')), false);
+    if (invalid->kind() == po::validation_error::invalid_option_value && description)
+      return fmt::format("{}: expected {}, found {}", where, expected_value(description->semantic().get(), value),
+                         quote(value));
+    if (invalid->kind() == po::validation_error::invalid_bool_value)
+      return fmt::format("{}: expected true or false, found {}", where, quote(value));
+    if (invalid->kind() == po::validation_error::multiple_values_not_allowed)
+      return fmt::format("{}: expected one value, found several", where);
+  }
+  if (dynamic_cast<const po::multiple_occurrences*>(&e))
+    return fmt::format("{}: expected it once, found it {} times", where, std::max<std::size_t>(2, occurrences(args, option)));
+  if (dynamic_cast<const po::required_option*>(&e)) return fmt::format("{}: expected it (it is required), found none", where);
+  if (dynamic_cast<const po::multiple_values*>(&e)) return fmt::format("{}: expected one value, found several", where);
+  if (dynamic_cast<const po::unknown_option*>(&e))
+    return fmt::format("{}: expected an option listed by --help, found an unknown one", where);
+  if (const auto* ambiguous = dynamic_cast<const po::ambiguous_option*>(&e)) {
+    std::vector<std::string> names;
+    for (const auto& a : ambiguous->alternatives()) names.push_back(quote(dashed(a)));
+    return fmt::format("{}: expected a whole option name, found the beginning of {}", where, fmt::join(names, " and "));
+  }
+  if (const auto* syntax = dynamic_cast<const po::invalid_syntax*>(&e)) {
+    if (syntax->kind() == po::invalid_syntax::missing_parameter)
+      return fmt::format("{}: expected a value, found none", where);
+    if (syntax->kind() == po::invalid_syntax::extra_parameter)
+      return fmt::format("{}: expected no value (it is a switch), found one", where);
+  }
+  return shorten_quoted_parts(e.what());
+}
 
 bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
                         const po::positional_options_description& positional, po::variables_map& vm,
@@ -112,15 +276,24 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
     }
     po::notify(vm);
   } catch (const po::too_many_positional_options_error&) {
-    throw InputError(fmt::format("unexpected argument; usage: {}", usage));
+    throw InputError(fmt::format("unexpected argument; usage: {}", first_line(usage)));
   } catch (const po::required_option& e) {
     std::string name = e.get_option_name();
     name.erase(0, name.find_first_not_of('-'));
-    if (std::find(positionals.begin(), positionals.end(), name) != positionals.end())
-      throw InputError(fmt::format("expected the {} argument, found none; usage: {}", upper(name), usage));
-    throw InputError(shorten_quoted_parts(e.what()));
+    if (std::find(positionals.begin(), positionals.end(), name) != positionals.end()) {
+      // Boost names the first missing one in alphabetical order; the user reads them in order.
+      for (const std::string& p : positionals) {
+        const po::option_description* option = desc.find_nothrow(p, false);
+        if (!vm.count(p) && option && option->semantic()->is_required()) {
+          name = p;
+          break;
+        }
+      }
+      throw InputError(fmt::format("expected the {} argument, found none; usage: {}", upper(name), first_line(usage)));
+    }
+    throw InputError(option_error_message(e, desc, args));
   } catch (const po::error& e) {
-    throw InputError(shorten_quoted_parts(e.what()));
+    throw InputError(option_error_message(e, desc, args));
   }
   reject_empty_values(vm, desc, positionals);
   if (vm.count("format")) parse_format(vm["format"].as<std::string>());
@@ -148,6 +321,11 @@ int emit(const Report& report, const CommonOptions& options, OutputSet& outputs)
     warn_non_finite(named);
     checked = &named;
   }
+  // The report goes to standard output unless --output says otherwise: another output sent
+  // there ("--svg -") is the one to blame, not the --output the user may never have typed.
+  if (const auto other = outputs.standard_output_option(); other && options.output == "-")
+    fail_option(*other, "cannot write '-': standard output receives the report; give --output FILE to write the "
+                        "report elsewhere");
   outputs.add("--output", options.output, render_for_output(*checked, options, outputs));
   outputs.commit();
   print_moved_warnings(*checked, options, std::cerr);

@@ -48,6 +48,17 @@ const InputFile* input_with_id(const struct stat& st) {
   fail_option(option, fmt::format("cannot write {}: {}", quote(path), reason));
 }
 
+/// Refuses standard output when the shell opened it on a file this process reads
+/// (`gearkit train m.yaml 1<>m.yaml`, or `>>`): writing the report would destroy the model.
+void check_standard_output_is_no_input() {
+  struct stat st{};
+  if (::fstat(STDOUT_FILENO, &st) != 0 || !S_ISREG(st.st_mode)) return;
+  if (const InputFile* in = input_with_id(st))
+    throw InputError(fmt::format("standard output is the input file {}: refusing to write over an input (redirect "
+                                 "standard output elsewhere or give --output FILE)",
+                                 quote(in->path)));
+}
+
 /// Writes all of [p, p+n) to fd; on failure returns false with the errno in `err`.
 bool write_all(int fd, const char* p, std::size_t n, int& err) {
   while (n > 0) {
@@ -232,6 +243,7 @@ struct OutputSet::Output {
 
   /// Refuses an input, a read-only file and a destination another output of the set has.
   void check(const std::vector<std::unique_ptr<Output>>& others) const {
+    if (kind == Kind::standard_output) check_standard_output_is_no_input();
     if (exists) {
       if (const InputFile* in = input_with_id(existing))
         fail(fmt::format("it is the input file {}; refusing to replace an input", quote(in->path)));
@@ -350,6 +362,12 @@ void remember_picture(std::string& svg, std::string_view content) {
 
 }  // namespace
 
+std::optional<std::string> OutputSet::standard_output_option() const {
+  for (const auto& out : outputs_)
+    if (out->kind == Kind::standard_output) return out->option;
+  return std::nullopt;
+}
+
 void OutputSet::add(std::string_view option, const std::string& path, std::string_view content) {
   Output& out = add_output(option, path);
   remember_picture(out.svg, content);
@@ -379,6 +397,8 @@ std::vector<OutputSet::Picture> OutputSet::pictures() const {
 
 void OutputSet::finish_temporaries() {
   for (auto& out : outputs_) {
+    // An input noted after add() (a late read) is still protected, before anything is written.
+    if (out->kind == Kind::standard_output) check_standard_output_is_no_input();
     if (out->kind != Kind::file) continue;
     out->finish();
     out->check(outputs_);  // an input noted after add() (a late read) is still protected

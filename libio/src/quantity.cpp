@@ -325,7 +325,10 @@ double unit_factor_si(std::string_view unit, Quantity expected) {
   return u.factor * rotational_frequency_factor(u, expected);
 }
 
-double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit) {
+namespace {
+
+/// The SI value of `text` and the number as typed (before its unit).
+std::pair<double, double> parse_si_and_number(std::string_view text, Quantity expected, std::string_view default_unit) {
   std::string_view t = trim(text);
   if (t.empty()) throw QuantityError(fmt::format("expected {}, found an empty value", describe(expected)));
   std::size_t n = scan_number(t);
@@ -360,6 +363,18 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
   double si_value = value * factor;
   if (!std::isfinite(si_value))
     throw QuantityError(fmt::format("expected a finite number, found {}", quoted(t)));
+  return {si_value, value};
+}
+
+}  // namespace
+
+double parse_quantity_si_any_size(std::string_view text, Quantity expected, std::string_view default_unit) {
+  return parse_si_and_number(text, expected, default_unit).first;
+}
+
+double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit) {
+  const auto [si_value, value] = parse_si_and_number(text, expected, default_unit);
+  const std::string_view t = trim(text);
   const MagnitudeRange range = magnitude_range(expected);
   // A non-zero number that underflows to 0 in SI is as much out of range as one that is tiny.
   const double size = si_value == 0.0 && value != 0.0 ? std::numeric_limits<double>::denorm_min() : std::abs(si_value);
@@ -368,34 +383,6 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
                                     range.smallest, range.largest, range.si_unit.empty() ? "" : " ",
                                     range.si_unit, quoted(t)));
   return si_value;
-}
-
-Length parse_length(std::string_view text, std::string_view default_unit) {
-  return Length::from_value(parse_quantity_si(text, Quantity::length, default_unit));
-}
-Angle parse_angle(std::string_view text, std::string_view default_unit) {
-  return Angle::from_value(parse_quantity_si(text, Quantity::angle, default_unit));
-}
-AngularVelocity parse_angular_velocity(std::string_view text, std::string_view default_unit) {
-  return AngularVelocity::from_value(parse_quantity_si(text, Quantity::angular_velocity, default_unit));
-}
-Power parse_power(std::string_view text, std::string_view default_unit) {
-  return Power::from_value(parse_quantity_si(text, Quantity::power, default_unit));
-}
-Torque parse_torque(std::string_view text, std::string_view default_unit) {
-  return Torque::from_value(parse_quantity_si(text, Quantity::torque, default_unit));
-}
-MomentOfInertia parse_moment_of_inertia(std::string_view text, std::string_view default_unit) {
-  return MomentOfInertia::from_value(parse_quantity_si(text, Quantity::moment_of_inertia, default_unit));
-}
-Mass parse_mass(std::string_view text, std::string_view default_unit) {
-  return Mass::from_value(parse_quantity_si(text, Quantity::mass, default_unit));
-}
-Force parse_force(std::string_view text, std::string_view default_unit) {
-  return Force::from_value(parse_quantity_si(text, Quantity::force, default_unit));
-}
-Time parse_time(std::string_view text, std::string_view default_unit) {
-  return Time::from_value(parse_quantity_si(text, Quantity::time, default_unit));
 }
 
 }  // namespace gearkit::io

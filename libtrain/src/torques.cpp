@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
 
@@ -43,6 +44,114 @@ std::pair<Rational, Rational> mesh_gear_torques(const TrainModel& model, MeshId 
   return {multiplier * c.on_a, multiplier * c.on_b};
 }
 
+namespace {
+
+/// The condition whose unknown the given torque replaces: the given torque acts on the same
+/// member as the load, an input's torque or a fixed member's reaction.
+std::optional<std::size_t> replaced_condition(const std::vector<Condition>& conditions, MemberId output,
+                                              MemberId given_member) {
+  if (given_member == output) return std::nullopt;
+  for (std::size_t j = 0; j < conditions.size(); ++j)
+    if (conditions[j].kind == Condition::Kind::input && conditions[j].member == given_member) return j;
+  for (std::size_t j = 0; j < conditions.size(); ++j)
+    if (conditions[j].kind == Condition::Kind::fix && conditions[j].member == given_member) return j;
+  return std::nullopt;
+}
+
+/// The columns of the torque system: mesh multipliers, then the conditions' reactions, then the
+/// load, then the given torque (the one parameter).
+struct TorqueColumns {
+  std::vector<Unknown> unknowns;
+  std::vector<long long> preference;
+  std::vector<std::optional<std::size_t>> of_condition;
+  std::optional<std::size_t> output;
+  std::size_t given = 0;
+};
+
+TorqueColumns torque_columns(std::size_t meshes, const std::vector<Condition>& conditions, MemberId output,
+                             MemberId given_member) {
+  const std::optional<std::size_t> replaced = replaced_condition(conditions, output, given_member);
+  TorqueColumns columns;
+  for (MeshId k = 0; k < meshes; ++k) {
+    columns.unknowns.push_back({Unknown::Kind::mesh, k});
+    columns.preference.push_back(static_cast<long long>(k));
+  }
+  columns.of_condition.resize(conditions.size());
+  for (std::size_t j = 0; j < conditions.size(); ++j) {
+    if (replaced && *replaced == j) continue;
+    columns.of_condition[j] = columns.unknowns.size();
+    columns.unknowns.push_back({Unknown::Kind::condition, j});
+    columns.preference.push_back(1000000 + static_cast<long long>(j));
+  }
+  if (given_member != output) {
+    columns.output = columns.unknowns.size();
+    columns.unknowns.push_back({Unknown::Kind::output, 0});
+    columns.preference.push_back(2000000);
+  }
+  columns.given = columns.unknowns.size();
+  return columns;
+}
+
+/// Member equilibrium rows: sum of mesh torques + external torques = 0, one per member.
+std::vector<std::map<std::size_t, Rational>> equilibrium_rows(const TrainModel& model,
+                                                              const std::vector<Condition>& conditions,
+                                                              const TorqueColumns& columns, MemberId output,
+                                                              MemberId given_member,
+                                                              const std::vector<MeshDriver>& drivers) {
+  std::vector<std::map<std::size_t, Rational>> rows(model.member_count());
+  for (MeshId k = 0; k < model.meshes().size(); ++k) {
+    const Mesh& mesh = model.mesh(k);
+    const MeshTorqueCoefficients c = mesh_coefficients(model, k, drivers.empty() ? MeshDriver::none : drivers[k]);
+    rows[model.gear(mesh.gear_a).member][k] += c.on_a;
+    rows[model.gear(mesh.gear_b).member][k] += c.on_b;
+    rows[mesh.carrier][k] += c.on_carrier;
+  }
+  for (std::size_t j = 0; j < conditions.size(); ++j) {
+    const Condition& c = conditions[j];
+    if (!columns.of_condition[j]) continue;
+    rows.at(c.member)[*columns.of_condition[j]] += 1;
+    if (c.kind == Condition::Kind::couple) rows.at(c.other)[*columns.of_condition[j]] -= 1;
+  }
+  if (columns.output) rows[output][*columns.output] += 1;
+  rows[given_member][columns.given] += 1;
+  return rows;
+}
+
+/// The external torques, couplings and the frame's reaction from the solved columns.
+void fill_external_torques(TorqueSolution& solution, const std::vector<Condition>& conditions,
+                           const TorqueColumns& columns, const std::map<std::size_t, Rational>& ground_row,
+                           MemberId output, MemberId given_member,
+                           const std::function<std::optional<Rational>(std::size_t)>& value_of) {
+  solution.external[given_member] = Rational(1);
+  const auto add = [&](MemberId m, const std::optional<Rational>& v, int sign) {
+    auto& slot = solution.external[m];
+    if (!slot) return;
+    if (!v) slot.reset();
+    else *slot += sign * *v;
+  };
+  solution.coupling.resize(conditions.size());
+  for (std::size_t j = 0; j < conditions.size(); ++j) {
+    if (!columns.of_condition[j]) continue;
+    const auto v = value_of(*columns.of_condition[j]);
+    if (conditions[j].kind == Condition::Kind::couple) solution.coupling[j] = v;  // internal to the machine
+    else add(conditions[j].member, v, +1);
+  }
+  if (columns.output) add(output, value_of(*columns.output), +1);
+  // The frame: the reaction of gears fixed to it (its equilibrium row was not imposed).
+  std::optional<Rational> frame = Rational(0);
+  for (const auto& [column, value] : ground_row) {
+    const auto v = value_of(column);
+    if (!v) {
+      frame.reset();
+      break;
+    }
+    *frame -= value * *v;
+  }
+  solution.external[ground] = frame;
+}
+
+}  // namespace
+
 TorqueSolution solve_torques(const TrainModel& model, const std::vector<Condition>& conditions, MemberId output,
                              MemberId given_member, const std::vector<MeshDriver>& drivers) {
   const std::size_t n = model.member_count();
@@ -52,57 +161,10 @@ TorqueSolution solve_torques(const TrainModel& model, const std::vector<Conditio
     throw std::invalid_argument("solve_torques: the given torque must act on a member other than ground");
   if (!drivers.empty() && drivers.size() != meshes) throw std::invalid_argument("solve_torques: one driver per mesh");
 
-  // The given torque replaces the unknown acting on the same member: the load, an input's torque
-  // or a fixed member's reaction.
-  std::optional<std::size_t> replaced;
-  if (given_member != output) {
-    for (std::size_t j = 0; j < conditions.size() && !replaced; ++j)
-      if (conditions[j].kind == Condition::Kind::input && conditions[j].member == given_member) replaced = j;
-    for (std::size_t j = 0; j < conditions.size() && !replaced; ++j)
-      if (conditions[j].kind == Condition::Kind::fix && conditions[j].member == given_member) replaced = j;
-  }
-
-  std::vector<Unknown> unknowns;
-  std::vector<long long> preference;
-  for (MeshId k = 0; k < meshes; ++k) {
-    unknowns.push_back({Unknown::Kind::mesh, k});
-    preference.push_back(static_cast<long long>(k));
-  }
-  std::vector<std::optional<std::size_t>> column_of_condition(conditions.size());
-  for (std::size_t j = 0; j < conditions.size(); ++j) {
-    if (replaced && *replaced == j) continue;
-    column_of_condition[j] = unknowns.size();
-    unknowns.push_back({Unknown::Kind::condition, j});
-    preference.push_back(1000000 + static_cast<long long>(j));
-  }
-  std::optional<std::size_t> output_column;
-  if (given_member != output) {
-    output_column = unknowns.size();
-    unknowns.push_back({Unknown::Kind::output, 0});
-    preference.push_back(2000000);
-  }
-  const std::size_t given_column = unknowns.size();
-
-  // Member equilibrium rows: sum of mesh torques + external torques = 0.
-  std::vector<std::map<std::size_t, Rational>> rows(n);
-  for (MeshId k = 0; k < meshes; ++k) {
-    const Mesh& mesh = model.mesh(k);
-    const MeshTorqueCoefficients c = mesh_coefficients(model, k, drivers.empty() ? MeshDriver::none : drivers[k]);
-    rows[model.gear(mesh.gear_a).member][k] += c.on_a;
-    rows[model.gear(mesh.gear_b).member][k] += c.on_b;
-    rows[mesh.carrier][k] += c.on_carrier;
-  }
-  for (std::size_t j = 0; j < conditions.size(); ++j) {
-    const Condition& c = conditions[j];
-    if (!column_of_condition[j]) continue;
-    rows.at(c.member)[*column_of_condition[j]] += 1;
-    if (c.kind == Condition::Kind::couple) rows.at(c.other)[*column_of_condition[j]] -= 1;
-  }
-  if (output_column) rows[output][*output_column] += 1;
-  rows[given_member][given_column] += 1;
-
+  const TorqueColumns columns = torque_columns(meshes, conditions, output, given_member);
+  const auto rows = equilibrium_rows(model, conditions, columns, output, given_member, drivers);
   TorqueSolution solution;
-  EchelonSystem system(unknowns.size(), 1, preference);
+  EchelonSystem system(columns.unknowns.size(), 1, columns.preference);
   for (MemberId m = n; m-- > 1;) {  // last declared first: the stages of a chain stay local
     SparseRow row;
     for (const auto& [column, value] : rows[m])
@@ -120,42 +182,15 @@ TorqueSolution solve_torques(const TrainModel& model, const std::vector<Conditio
   const auto value_of = [&](std::size_t column) -> std::optional<Rational> {
     Rational v(0);
     for (const auto& [c, coefficient] : expressions[column]) {
-      if (c != given_column) return std::nullopt;
+      if (c != columns.given) return std::nullopt;
       v = coefficient;
     }
     return v;
   };
-
   solution.mesh_multiplier.resize(meshes);
   for (MeshId k = 0; k < meshes; ++k) solution.mesh_multiplier[k] = value_of(k);
-
   solution.external.assign(n, Rational(0));
-  solution.external[given_member] = Rational(1);
-  const auto add = [&](MemberId m, const std::optional<Rational>& v, int sign) {
-    auto& slot = solution.external[m];
-    if (!slot) return;
-    if (!v) slot.reset();
-    else *slot += sign * *v;
-  };
-  solution.coupling.resize(conditions.size());
-  for (std::size_t j = 0; j < conditions.size(); ++j) {
-    if (!column_of_condition[j]) continue;
-    const auto v = value_of(*column_of_condition[j]);
-    if (conditions[j].kind == Condition::Kind::couple) solution.coupling[j] = v;  // internal to the machine
-    else add(conditions[j].member, v, +1);
-  }
-  if (output_column) add(output, value_of(*output_column), +1);
-  // The frame: the reaction of gears fixed to it (its equilibrium row was not imposed).
-  std::optional<Rational> frame = Rational(0);
-  for (const auto& [column, value] : rows[ground]) {
-    const auto v = value_of(column);
-    if (!v) {
-      frame.reset();
-      break;
-    }
-    *frame -= value * *v;
-  }
-  solution.external[ground] = frame;
+  fill_external_torques(solution, conditions, columns, rows[ground], output, given_member, value_of);
   return solution;
 }
 
@@ -183,19 +218,13 @@ std::vector<MeshDriver> drivers_from(const TrainModel& model, const TorqueSoluti
 
 }  // namespace
 
-PowerFlow analyse_power_flow(const TrainModel& model, const std::vector<Condition>& conditions,
-                             const SpeedSolution& speeds, const std::vector<double>& input_speeds_rad_s,
-                             MemberId output, MemberId given_member, double given_torque_Nm) {
-  const std::size_t n = model.member_count();
-  std::vector<double> w(n);
-  for (MemberId m = 0; m < n; ++m) w[m] = speed_value(speeds, m, input_speeds_rad_s);
+namespace {
 
-  PowerFlow flow;
-  const TorqueSolution ideal = solve_torques(model, conditions, output, given_member);
-  if (!ideal.balanced) {
-    flow.warnings.push_back(ideal.message);
-    return flow;
-  }
+/// The torques with losses: the power direction of each mesh from the ideal torques, checked
+/// again with the losses until it no longer changes (a change that persists is near self-locking).
+TorqueSolution lossy_torques(const TrainModel& model, const std::vector<Condition>& conditions, MemberId output,
+                             MemberId given_member, const TorqueSolution& ideal, const std::vector<double>& w,
+                             double given_torque_Nm, PowerFlow& flow) {
   flow.drivers = drivers_from(model, ideal, w, given_torque_Nm, {});
   TorqueSolution lossy = solve_torques(model, conditions, output, given_member, flow.drivers);
   for (int iteration = 0; lossy.balanced; ++iteration) {
@@ -209,7 +238,13 @@ PowerFlow analyse_power_flow(const TrainModel& model, const std::vector<Conditio
     flow.drivers = again;
     lossy = solve_torques(model, conditions, output, given_member, flow.drivers);
   }
+  return lossy;
+}
 
+/// Torques and powers of every member and coupling, ideal and with losses, in SI.
+void fill_torques_and_powers(PowerFlow& flow, const std::vector<Condition>& conditions, const TorqueSolution& ideal,
+                             const TorqueSolution& lossy, const std::vector<double>& w, double given_torque_Nm) {
+  const std::size_t n = w.size();
   const auto scaled = [&](const std::optional<Rational>& r) -> std::optional<double> {
     if (!r) return std::nullopt;
     return to_double(*r) * given_torque_Nm;
@@ -232,38 +267,44 @@ PowerFlow analyse_power_flow(const TrainModel& model, const std::vector<Conditio
     if (flow.torque_losses_Nm[m]) flow.power_losses_W[m] = *flow.torque_losses_Nm[m] * w[m];
     if (flow.power_ideal_W[m] && *flow.power_ideal_W[m] > 0) flow.input_power_W += *flow.power_ideal_W[m];
   }
+}
 
-  // Efficiency between the first input and the output.
+/// Efficiency between the first input and the output, with its warnings (self-locking, back-driven).
+void add_efficiency(PowerFlow& flow, const TrainModel& model, const std::vector<Condition>& conditions,
+                    const SpeedSolution& speeds, const TorqueSolution& lossy, MemberId output) {
   std::optional<MemberId> input;
   for (const Condition& c : conditions)
     if (c.kind == Condition::Kind::input) {
       input = c.member;
       break;
     }
-  if (input && lossy.balanced && flow.power_losses_W[*input] && flow.power_losses_W[output]) {
-    const double p_in = *flow.power_losses_W[*input];
-    if (p_in > 0) {
-      flow.efficiency = -*flow.power_losses_W[output] / p_in;
-      // With losses the output takes power in too: no torque at the input alone moves the train
-      // this way (a back-driven Wolfrom train with a low eta_0 locks).
-      if (*flow.efficiency <= 0)
-        flow.warnings.push_back(fmt::format(
-            "self-locking: with the mesh losses the input '{}' cannot drive the output '{}' (efficiency {:.4f} <= 0: "
-            "the load would have to drive the train as well)",
-            model.member(*input).name, model.member(output).name, *flow.efficiency));
-    } else {
-      flow.warnings.push_back(fmt::format("the input '{}' receives power instead of giving it (back-driven)",
-                                          model.member(*input).name));
-    }
-    const auto exact_in = speed_ratio(speeds, *input, *input);
-    const auto exact_out = speed_ratio(speeds, output, *input);
-    if (flow.efficiency && exact_in && exact_out && lossy.external[*input] && lossy.external[output] &&
-        *lossy.external[*input] != 0)
-      flow.efficiency_exact = Rational(-(*lossy.external[output] * *exact_out) / (*lossy.external[*input] * *exact_in));
+  if (!input || !lossy.balanced || !flow.power_losses_W[*input] || !flow.power_losses_W[output]) return;
+  const double p_in = *flow.power_losses_W[*input];
+  if (p_in > 0) {
+    flow.efficiency = -*flow.power_losses_W[output] / p_in;
+    // With losses the output takes power in too: no torque at the input alone moves the train
+    // this way (a back-driven Wolfrom train with a low eta_0 locks).
+    if (*flow.efficiency <= 0)
+      flow.warnings.push_back(fmt::format(
+          "self-locking: with the mesh losses the input '{}' cannot drive the output '{}' (efficiency {:.4f} <= 0: "
+          "the load would have to drive the train as well)",
+          model.member(*input).name, model.member(output).name, *flow.efficiency));
+  } else {
+    flow.warnings.push_back(fmt::format("the input '{}' receives power instead of giving it (back-driven)",
+                                        model.member(*input).name));
   }
+  const auto exact_in = speed_ratio(speeds, *input, *input);
+  const auto exact_out = speed_ratio(speeds, output, *input);
+  if (flow.efficiency && exact_in && exact_out && lossy.external[*input] && lossy.external[output] &&
+      *lossy.external[*input] != 0)
+    flow.efficiency_exact = Rational(-(*lossy.external[output] * *exact_out) / (*lossy.external[*input] * *exact_in));
+}
 
-  // Power circulation: a member (through its meshes) or a coupling carrying more power than
-  // enters the train.
+/// Power circulation: a member (through its meshes) or a coupling carrying more power than
+/// enters the train.
+void find_power_circulation(PowerFlow& flow, const TrainModel& model, const std::vector<Condition>& conditions,
+                            const TorqueSolution& ideal, const std::vector<double>& w, double given_torque_Nm) {
+  const std::size_t n = model.member_count();
   std::vector<double> through(n, 0.0);
   for (MeshId k = 0; k < model.meshes().size(); ++k) {
     if (!ideal.mesh_multiplier[k]) continue;
@@ -297,6 +338,27 @@ PowerFlow analyse_power_flow(const TrainModel& model, const std::vector<Conditio
     flow.warnings.push_back(fmt::format("power circulation: {} carries {:.4g} times the input power",
                                         flow.max_through_power_at, flow.max_through_power_W / flow.input_power_W));
   }
+}
+
+}  // namespace
+
+PowerFlow analyse_power_flow(const TrainModel& model, const std::vector<Condition>& conditions,
+                             const SpeedSolution& speeds, const std::vector<double>& input_speeds_rad_s,
+                             MemberId output, MemberId given_member, double given_torque_Nm) {
+  const std::size_t n = model.member_count();
+  std::vector<double> w(n);
+  for (MemberId m = 0; m < n; ++m) w[m] = speed_value(speeds, m, input_speeds_rad_s);
+
+  PowerFlow flow;
+  const TorqueSolution ideal = solve_torques(model, conditions, output, given_member);
+  if (!ideal.balanced) {
+    flow.warnings.push_back(ideal.message);
+    return flow;
+  }
+  const TorqueSolution lossy = lossy_torques(model, conditions, output, given_member, ideal, w, given_torque_Nm, flow);
+  fill_torques_and_powers(flow, conditions, ideal, lossy, w, given_torque_Nm);
+  add_efficiency(flow, model, conditions, speeds, lossy, output);
+  find_power_circulation(flow, model, conditions, ideal, w, given_torque_Nm);
   return flow;
 }
 

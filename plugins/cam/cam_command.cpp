@@ -35,15 +35,6 @@ struct Options {
   GcodeOptions gcode_options;
 };
 
-std::optional<double> quantity_option(const io::po::variables_map& vm, const char* key, io::Quantity q, const char* unit) {
-  if (!vm.count(key)) return std::nullopt;
-  try {
-    return io::parse_quantity_si(vm[key].as<std::string>(), q, unit);
-  } catch (const io::QuantityError& e) {
-    io::fail_option(fmt::format("--{}", key), e.what());
-  }
-}
-
 Options read_options(const io::po::variables_map& vm) {
   Options o;
   o.file = vm["file"].as<std::string>();
@@ -51,21 +42,18 @@ Options read_options(const io::po::variables_map& vm) {
                              {"dynamics-plot", &o.dynamics_plot}, {"dyn", &o.dyn}, {"gcode", &o.gcode}})
     if (vm.count(key)) *target = vm[key].as<std::string>();
   o.dxf_lines_arcs = vm.count("dxf-lines-arcs") > 0;
-  if (const auto rc = quantity_option(vm, "cutter-radius", io::Quantity::length, "mm")) {
-    if (!(*rc > 0 && *rc * 1000 <= kMaxLengthMm))
-      io::fail_option("--cutter-radius", fmt::format("expected a radius > 0 and up to {} mm, found {:.6g} mm", kMaxLengthMm, *rc * 1000));
+  const io::OptionRange radius{0, kMaxLengthMm, true, false, "a radius > 0 and up to 10000 mm"};
+  if (const auto rc = io::quantity_option(vm, "cutter-radius", io::Quantity::length, "mm", radius))
     o.cutter_radius_mm = *rc * 1000;
-  }
-  o.follower_at = quantity_option(vm, "follower-at", io::Quantity::angle, "deg");
+  o.follower_at = io::quantity_option(vm, "follower-at", io::Quantity::angle, "deg");
   if (vm.count("gcode-form")) {
     const std::string form = vm["gcode-form"].as<std::string>();
     if (form != "xy" && form != "polar") io::fail_option("--gcode-form", fmt::format("expected xy or polar, found {}", io::quote(form)));
     o.gcode_options.polar = form == "polar";
   }
-  if (const auto feed = quantity_option(vm, "feed", io::Quantity::velocity, "mm/min")) {
-    if (!(*feed > 0 && *feed <= 1)) io::fail_option("--feed", fmt::format("expected a feed > 0 and up to 60000 mm/min, found {:.6g} mm/min", *feed * 60000));
+  const io::OptionRange feed_range{0, 60000, true, false, "a feed > 0 and up to 60000 mm/min"};
+  if (const auto feed = io::quantity_option(vm, "feed", io::Quantity::velocity, "mm/min", feed_range))
     o.gcode_options.feed_mm_min = *feed * 60000;
-  }
   return o;
 }
 
@@ -133,8 +121,9 @@ void add_exports(const CamModel& model, const CamResult& result, const io::Repor
 
 int run_cam_command(plugin::CommandContext& context) {
   io::po::options_description desc("gearkit cam options (bare numbers: mm and deg)");
+  io::po::positional_options_description positional;
+  io::add_positional_argument(desc, positional, "file", "FILE", "cam model (YAML, see docs/cam.md)");
   desc.add_options()
-      ("file", io::po::value<std::string>()->required(), "cam model (YAML, see docs/cam.md)")
       ("dxf", io::po::value<std::string>(), "write the cam (profile, pitch curve, base circle, tool path) as DXF R2000")
       ("dxf-lines-arcs", "write LINE and ARC entities instead of LWPOLYLINE bulges (still DXF R2000)")
       ("svg", io::po::value<std::string>(), "write an SVG drawing of the cam and its follower")
@@ -148,8 +137,6 @@ int run_cam_command(plugin::CommandContext& context) {
       ("gcode-form", io::po::value<std::string>(), "xy (2-axis mill, G2/G3 arcs; default) or polar (rotary table: X radius, C angle)")
       ("feed", io::po::value<std::string>(), "G-code feed rate (default 200 mm/min)");
   io::add_common_options(desc);
-  io::po::positional_options_description positional;
-  positional.add("file", 1);
   io::po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, kUsage, context.out)) return 0;
   const Options options = read_options(vm);

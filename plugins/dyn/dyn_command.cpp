@@ -48,18 +48,16 @@ void add_drive_line(const Model& m, io::Report& report) {
 
 int run_dyn_command(plugin::CommandContext& context) {
   po::options_description desc("gearkit dyn options");
+  po::positional_options_description positional;
+  io::add_positional_argument(desc, positional, "file", "FILE", "machine model (YAML, see docs/dyn.md)");
   desc.add_options()
-      ("file", po::value<std::string>()->value_name("FILE"), "machine model (YAML, see docs/dyn.md)")
       ("plot", po::value<std::string>()->value_name("FILE.svg"),
        "write the torque-angle diagram with its energy areas (flywheel), or else the speed-time plot, as SVG")
       ("speed-plot", po::value<std::string>()->value_name("FILE.svg"), "write the speed-time plot (motion) as SVG");
   io::add_common_options(desc);
-  po::positional_options_description positional;
-  positional.add("file", 1);
   po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
-  if (!vm.count("file")) throw io::InputError(fmt::format("missing the model file; usage: {}", usage));
 
   const Model model = load_model(vm["file"].as<std::string>(),
                                  [&context](std::string_view type) { return context.host.find_element_type(type); });

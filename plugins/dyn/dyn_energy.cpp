@@ -14,17 +14,15 @@ namespace {
 
 constexpr double rad_s_to_rpm = 60 / (2 * std::numbers::pi);
 
-}  // namespace
-
-void add_energy(const Model& m, Output& out) {
-  const EnergyQuestion& q = *m.energy;
+/// The steady cycle at the motor's nominal speed with the question's loads and phases.
+gd::SteadyCycle steady_cycle(const Model& m, const EnergyQuestion& q, double& rim_speed) {
   gd::SteadyCycle cycle;
   cycle.line = m.line;
   cycle.motor_speed = motor_speed(m, q.mark, "energy");
   const std::size_t load = gd::shaft_count(m.line) - 1;
   const double omega_load = cycle.motor_speed * gd::speed_ratio(m.line, 0, load);
   cycle.cycle_angle = q.cycle ? *q.cycle : omega_load * *q.cycle_time;
-  const double rim_speed = m.load.radius ? omega_load * *m.load.radius : 0.0;
+  rim_speed = m.load.radius ? omega_load * *m.load.radius : 0.0;
 
   for (const EnergyLoad& l : q.loads) {
     if (l.torque) cycle.torques.push_back({l.name, curve_of(*l.torque, cycle.cycle_angle), l.useful});
@@ -42,14 +40,11 @@ void add_energy(const Model& m, Output& out) {
                                       p.to * 180 / std::numbers::pi, cycle.cycle_angle * 180 / std::numbers::pi));
     cycle.phases.push_back({p.name, p.from, std::min(p.to, cycle.cycle_angle)});
   }
+  return cycle;
+}
 
-  gd::CycleEnergyBalance b;
-  try {
-    b = gd::analyse_energy(cycle);
-  } catch (const std::invalid_argument& e) {
-    io::fail_at(q.mark, fmt::format("energy: {}", e.what()));
-  }
-
+void report_summary(const Model& m, const EnergyQuestion& q, const gd::SteadyCycle& cycle, double rim_speed,
+                    const gd::CycleEnergyBalance& b, Output& out) {
   io::Table summary{"Energy over one steady cycle (constant speed)", {"quantity", "value", "unit"}, {}};
   summary.add_row({"cycle time", io::fixed(b.cycle_time, 4), "s"});
   summary.add_row({"cycle angle of the load shaft", io::fixed(cycle.cycle_angle / (2 * std::numbers::pi), 4), "rev"});
@@ -65,17 +60,21 @@ void add_energy(const Model& m, Output& out) {
     summary.add_row({fmt::format("electrical energy in {:g} s", *q.report_time), io::fixed(e / 3.6e6, 4), "kWh"});
   }
   out.report.tables.push_back(std::move(summary));
+}
 
+nlohmann::json report_phases(const gd::CycleEnergyBalance& b, Output& out) {
   nlohmann::json jphases = nlohmann::json::array();
-  if (!b.phases.empty()) {
-    io::Table t{"Power received by the load in each phase", {"phase", "duration [s]", "energy [J]", "mean power [W]"}, {}};
-    for (const auto& p : b.phases) {
-      t.add_row({p.name, io::fixed(p.duration, 4), io::fixed(p.energy, 2), io::fixed(p.mean_power, 2)});
-      jphases.push_back({{"name", p.name}, {"duration_s", p.duration}, {"energy_J", p.energy}, {"mean_power_W", p.mean_power}});
-    }
-    out.report.tables.push_back(std::move(t));
+  if (b.phases.empty()) return jphases;
+  io::Table t{"Power received by the load in each phase", {"phase", "duration [s]", "energy [J]", "mean power [W]"}, {}};
+  for (const auto& p : b.phases) {
+    t.add_row({p.name, io::fixed(p.duration, 4), io::fixed(p.energy, 2), io::fixed(p.mean_power, 2)});
+    jphases.push_back({{"name", p.name}, {"duration_s", p.duration}, {"energy_J", p.energy}, {"mean_power_W", p.mean_power}});
   }
+  out.report.tables.push_back(std::move(t));
+  return jphases;
+}
 
+nlohmann::json report_elements(const gd::CycleEnergyBalance& b, Output& out) {
   io::Table elements{"Mean power through each element", {"element", "in [W]", "out [W]", "dissipated [W]"}, {}};
   nlohmann::json jel = nlohmann::json::array();
   for (const auto& e : b.elements) {
@@ -83,7 +82,10 @@ void add_energy(const Model& m, Output& out) {
     jel.push_back({{"name", e.name}, {"power_in_W", e.power_in}, {"power_out_W", e.power_out}, {"power_lost_W", e.power_lost}});
   }
   out.report.tables.push_back(std::move(elements));
+  return jel;
+}
 
+nlohmann::json report_shafts(const Model& m, const gd::CycleEnergyBalance& b, Output& out) {
   io::Table shafts{"Shafts", {"shaft", "n [rpm]", "mean power [W]", "mean torque [N*m]"}, {}};
   nlohmann::json jsh = nlohmann::json::array();
   for (std::size_t k = 0; k < b.shaft_speed.size(); ++k) {
@@ -97,6 +99,25 @@ void add_energy(const Model& m, Output& out) {
   if (!m.line.stages.empty())
     out.report.notes.push_back("Mean torques at a reducer: the input is the shaft before it, the output the shaft after "
                                "it (each stage's output shaft carries the stage's name).");
+  return jsh;
+}
+
+}  // namespace
+
+void add_energy(const Model& m, Output& out) {
+  const EnergyQuestion& q = *m.energy;
+  double rim_speed = 0;
+  const gd::SteadyCycle cycle = steady_cycle(m, q, rim_speed);
+  gd::CycleEnergyBalance b;
+  try {
+    b = gd::analyse_energy(cycle);
+  } catch (const std::invalid_argument& e) {
+    io::fail_at(q.mark, fmt::format("energy: {}", e.what()));
+  }
+  report_summary(m, q, cycle, rim_speed, b, out);
+  nlohmann::json jphases = report_phases(b, out);
+  nlohmann::json jel = report_elements(b, out);
+  nlohmann::json jsh = report_shafts(m, b, out);
 
   nlohmann::json j{{"cycle_time_s", b.cycle_time},
                    {"cycle_angle_rad", cycle.cycle_angle},

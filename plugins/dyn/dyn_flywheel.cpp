@@ -6,13 +6,11 @@
 
 #include <fmt/format.h>
 
-#include <numbers>
-#include <tuple>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 
 namespace gearkit::plugins::dyn {
 
@@ -163,42 +161,59 @@ double motor_speed(const Model& model, const io::SourceMark& where, std::string_
   return *model.motor.speed;
 }
 
-void add_flywheel(const Model& m, Output& out) {
-  const FlywheelQuestion& q = *m.flywheel;
-  const double omega_motor = motor_speed(m, q.mark, "flywheel");
-  const std::size_t load = gd::shaft_count(m.line) - 1;
-  const double omega_mean = omega_motor * gd::speed_ratio(m.line, 0, load);
+namespace {
 
+/// The two torques on the load shaft over one cycle, one of them scaled to balance the cycle
+/// when the file asks for it ('scale: balance').
+struct CycleTorques {
+  gd::PiecewiseLinear drive, resist;
+  std::optional<double> scale;  ///< the balancing factor, when one torque was scaled
+  bool balance_resist = false;  ///< the scaled torque is the resisting one
+};
+
+CycleTorques cycle_torques(const Model& m, const FlywheelQuestion& q, Output& out) {
   gd::PiecewiseLinear drive = q.drive ? curve_of(*q.drive, q.cycle) : default_drive(m, q);
   const Resisting parts = q.resisting ? Resisting{curve_of(*q.resisting, q.cycle), gd::PiecewiseLinear::constant(0, 0, q.cycle)}
                                       : default_resisting(m, q);
   const auto combine = [&parts](double k) { return gd::difference(parts.law.scaled(k), parts.rim.scaled(-1)); };
-  gd::PiecewiseLinear resist = combine(1);
+  CycleTorques t{std::move(drive), combine(1), std::nullopt, false};
   const TorqueLaw* resisting_law = q.resisting ? &*q.resisting : &*m.load.resisting;
   const bool balance_drive = q.drive && q.drive->balance;
-  const bool balance_resist = resisting_law->balance;
-  if (balance_drive && balance_resist)
+  t.balance_resist = resisting_law->balance;
+  if (balance_drive && t.balance_resist)
     io::fail_at(q.drive->mark, "flywheel: only one of the two torques can be scaled to balance the cycle");
-  std::optional<double> scale;
   try {
-    if (balance_resist) {
+    if (t.balance_resist) {
       // Only the law is scaled; a rim force keeps its given size.
-      scale = gd::balance_scale(gd::difference(drive, parts.rim), parts.law);
-      resist = combine(*scale);
-      if (!q.resisting) out.load_resisting_scale = *scale;
+      t.scale = gd::balance_scale(gd::difference(t.drive, parts.rim), parts.law);
+      t.resist = combine(*t.scale);
+      if (!q.resisting) out.load_resisting_scale = *t.scale;
     } else if (balance_drive) {
-      scale = gd::balance_scale(resist, drive);
-      drive = drive.scaled(*scale);
+      t.scale = gd::balance_scale(t.resist, t.drive);
+      t.drive = t.drive.scaled(*t.scale);
     }
   } catch (const std::invalid_argument& e) {
     io::fail_at(q.mark, fmt::format("flywheel: {}", e.what()));
   }
+  if (!t.scale) close_printed_cycle(t.drive, t.resist, out.report.warnings);
+  return t;
+}
 
-  if (!scale) close_printed_cycle(drive, resist, out.report.warnings);
-  gd::CycleEnergy c;
-  gd::FlywheelSizing s;
+/// The steady cycle, the flywheel sized for it and the fluctuation the equation of motion gives.
+struct FlywheelResult {
+  gd::CycleEnergy cycle;
+  gd::FlywheelSizing sizing;
+  std::optional<double> integrated;
+  double motor_torque = 0;  ///< N*m: the mean driving torque carried to the motor shaft
+};
+
+/// @param omega_motor rad/s, the motor's nominal speed.
+FlywheelResult flywheel_for(const Model& m, const FlywheelQuestion& q, const CycleTorques& t, double omega_motor) {
+  const std::size_t load = gd::shaft_count(m.line) - 1;
+  const double omega_mean = omega_motor * gd::speed_ratio(m.line, 0, load);
+  FlywheelResult f;
   try {
-    c = gd::analyse_cycle(drive, resist);
+    f.cycle = gd::analyse_cycle(t.drive, t.resist);
   } catch (const std::invalid_argument& e) {
     io::fail_at(q.mark, fmt::format("flywheel: {} (with 'scale: balance' on the torque whose size follows from the "
                                     "energy balance)", e.what()));
@@ -206,45 +221,53 @@ void add_flywheel(const Model& m, Output& out) {
   const std::optional<gd::InertiaTable>& linkage = m.load.inertia_table;
   const double fixed_inertia = gd::reduced_inertia(m.line, load);
   try {
-    s = gd::size_flywheel(c.energy_excursion, omega_mean, q.fluctuation,
-                          fixed_inertia + (linkage ? linkage->mean_inertia() : 0.0));
+    f.sizing = gd::size_flywheel(f.cycle.energy_excursion, omega_mean, q.fluctuation,
+                                 fixed_inertia + (linkage ? linkage->mean_inertia() : 0.0));
   } catch (const std::invalid_argument& e) {
     io::fail_at(q.mark, fmt::format("flywheel: {}", e.what()));
   }
-  const std::optional<double> integrated = integrated_fluctuation(drive, resist, c, s, fixed_inertia, linkage);
-
-  const std::string& shaft = m.load.name;
-  io::Table t{fmt::format("Flywheel: steady cycle on the '{}' shaft", shaft), {"quantity", "value", "unit"}, {}};
-  t.add_row({"mean speed omega_m", io::fixed(s.omega_mean, 3), "rad/s"});
-  t.add_row({"mean speed n_m", io::fixed(s.omega_mean * rad_s_to_rpm, 2), "rpm"});
-  t.add_row({"coefficient of speed fluctuation delta", io::fixed(s.fluctuation, 5), ""});
-  t.add_row({"omega_max", io::fixed(s.omega_max, 3), "rad/s"});
-  t.add_row({"omega_min", io::fixed(s.omega_min, 3), "rad/s"});
-  t.add_row({"mean driving torque", io::fixed(c.mean_drive_torque, 3), "N*m"});
+  f.integrated = integrated_fluctuation(t.drive, t.resist, f.cycle, f.sizing, fixed_inertia, linkage);
   // The same power on the motor shaft: T_motor = T_load (omega_load / omega_motor) / eta.
-  const double motor_torque = c.mean_drive_torque * gd::speed_ratio(m.line, 0, load) / gd::efficiency_between(m.line, 0, load);
-  t.add_row({"mean torque on the motor shaft", io::fixed(motor_torque, 3), "N*m"});
-  t.add_row({"largest driving torque", io::fixed(drive.max_value(), 3), "N*m"});
-  t.add_row({"largest resisting torque", io::fixed(resist.max_value(), 3), "N*m"});
-  if (scale) t.add_row({balance_resist ? "resisting torque scale (balance)" : "driving torque scale (balance)",
-                        io::fixed(*scale, 6), ""});
-  t.add_row({"energy per cycle", io::fixed(c.drive_energy, 2), "J"});
-  t.add_row({"theta at omega_max", io::fixed(c.theta_at_energy_max * rad_to_deg, 3), "deg"});
-  t.add_row({"theta at omega_max", io::fixed(c.theta_at_energy_max, 4), "rad"});
-  t.add_row({"theta at omega_min", io::fixed(c.theta_at_energy_min * rad_to_deg, 3), "deg"});
-  t.add_row({"theta at omega_min", io::fixed(c.theta_at_energy_min, 4), "rad"});
-  t.add_row({"largest energy excursion E_max - E_min", io::fixed(c.energy_excursion, 2), "J"});
-  t.add_row({"inertia of the machine (reduced)", io::fixed(s.inertia_machine, 4), "kg*m^2"});
-  t.add_row({"total inertia needed", io::fixed(s.inertia_total, 4), "kg*m^2"});
-  t.add_row({"flywheel inertia", io::fixed(s.inertia_flywheel, 4), "kg*m^2"});
-  if (integrated) t.add_row({"delta from the equation of motion with it", io::fixed(*integrated, 5), ""});
-  out.report.tables.push_back(std::move(t));
-  if (linkage)
+  f.motor_torque = f.cycle.mean_drive_torque * gd::speed_ratio(m.line, 0, load) / gd::efficiency_between(m.line, 0, load);
+  return f;
+}
+
+/// The table "Flywheel: steady cycle on the ... shaft" and the note on a linkage's inertia.
+void report_flywheel(const Model& m, const CycleTorques& t, const FlywheelResult& f, Output& out) {
+  const gd::CycleEnergy& c = f.cycle;
+  const gd::FlywheelSizing& s = f.sizing;
+  io::Table table{fmt::format("Flywheel: steady cycle on the '{}' shaft", m.load.name), {"quantity", "value", "unit"}, {}};
+  table.add_row({"mean speed omega_m", io::fixed(s.omega_mean, 3), "rad/s"});
+  table.add_row({"mean speed n_m", io::fixed(s.omega_mean * rad_s_to_rpm, 2), "rpm"});
+  table.add_row({"coefficient of speed fluctuation delta", io::fixed(s.fluctuation, 5), ""});
+  table.add_row({"omega_max", io::fixed(s.omega_max, 3), "rad/s"});
+  table.add_row({"omega_min", io::fixed(s.omega_min, 3), "rad/s"});
+  table.add_row({"mean driving torque", io::fixed(c.mean_drive_torque, 3), "N*m"});
+  table.add_row({"mean torque on the motor shaft", io::fixed(f.motor_torque, 3), "N*m"});
+  table.add_row({"largest driving torque", io::fixed(t.drive.max_value(), 3), "N*m"});
+  table.add_row({"largest resisting torque", io::fixed(t.resist.max_value(), 3), "N*m"});
+  if (t.scale) table.add_row({t.balance_resist ? "resisting torque scale (balance)" : "driving torque scale (balance)",
+                              io::fixed(*t.scale, 6), ""});
+  table.add_row({"energy per cycle", io::fixed(c.drive_energy, 2), "J"});
+  table.add_row({"theta at omega_max", io::fixed(c.theta_at_energy_max * rad_to_deg, 3), "deg"});
+  table.add_row({"theta at omega_max", io::fixed(c.theta_at_energy_max, 4), "rad"});
+  table.add_row({"theta at omega_min", io::fixed(c.theta_at_energy_min * rad_to_deg, 3), "deg"});
+  table.add_row({"theta at omega_min", io::fixed(c.theta_at_energy_min, 4), "rad"});
+  table.add_row({"largest energy excursion E_max - E_min", io::fixed(c.energy_excursion, 2), "J"});
+  table.add_row({"inertia of the machine (reduced)", io::fixed(s.inertia_machine, 4), "kg*m^2"});
+  table.add_row({"total inertia needed", io::fixed(s.inertia_total, 4), "kg*m^2"});
+  table.add_row({"flywheel inertia", io::fixed(s.inertia_flywheel, 4), "kg*m^2"});
+  if (f.integrated) table.add_row({"delta from the equation of motion with it", io::fixed(*f.integrated, 5), ""});
+  out.report.tables.push_back(std::move(table));
+  if (const std::optional<gd::InertiaTable>& linkage = m.load.inertia_table)
     out.report.notes.push_back(fmt::format(
         "The linkage's reduced inertia varies from {:.6g} to {:.6g} kg*m^2 over its cycle; the flywheel is sized with "
         "its mean {:.6g} kg*m^2, and the equation of motion gives the fluctuation the machine really has.",
         linkage->min_inertia(), linkage->max_inertia(), linkage->mean_inertia()));
+}
 
+/// The table of energy areas between the torque curves; returns them for JSON.
+nlohmann::json report_lobes(const gd::CycleEnergy& c, Output& out) {
   io::Table lobes{"Energy areas between the torque curves (+ speeds up, - slows down)",
                   {"from [deg]", "to [deg]", "energy [J]"}, {}};
   nlohmann::json jl = nlohmann::json::array();
@@ -259,15 +282,14 @@ void add_flywheel(const Model& m, Output& out) {
   out.report.notes.push_back("The speed is highest where the driving torque falls below the resisting one and lowest "
                              "where it rises above it; I_total = (E_max - E_min) / (delta omega_m^2), exact for "
                              "omega_m = (omega_max + omega_min) / 2 and a constant inertia.");
+  return jl;
+}
 
-  if (!s.flywheel_needed)
-    out.report.warnings.push_back(fmt::format(
-        "no flywheel needed: the machine's own {:.4g} kg*m^2 on the '{}' shaft already keeps the fluctuation at "
-        "{:.4g}, below the {:.4g} asked for",
-        s.inertia_machine, shaft, s.fluctuation_without_flywheel, s.fluctuation));
-
-  auto& j = out.report.json;
-  j["shaft"] = shaft;
+void flywheel_json(const Model& m, const CycleTorques& t, const FlywheelResult& f, nlohmann::json lobes,
+                   nlohmann::json& j) {
+  const gd::CycleEnergy& c = f.cycle;
+  const gd::FlywheelSizing& s = f.sizing;
+  j["shaft"] = m.load.name;
   j["omega_mean_rad_s"] = s.omega_mean;
   j["fluctuation"] = s.fluctuation;
   j["omega_max_rad_s"] = s.omega_max;
@@ -276,25 +298,42 @@ void add_flywheel(const Model& m, Output& out) {
   j["theta_at_omega_min_deg"] = c.theta_at_energy_min * rad_to_deg;
   j["theta_at_omega_max_rad"] = c.theta_at_energy_max;
   j["theta_at_omega_min_rad"] = c.theta_at_energy_min;
-  j["motor_torque_Nm"] = motor_torque;
+  j["motor_torque_Nm"] = f.motor_torque;
   j["energy_excursion_J"] = c.energy_excursion;
   j["energy_per_cycle_J"] = c.drive_energy;
   j["mean_drive_torque_Nm"] = c.mean_drive_torque;
-  j["max_resisting_torque_Nm"] = resist.max_value();
-  if (scale) j[balance_resist ? "resisting_scale" : "drive_scale"] = *scale;
+  j["max_resisting_torque_Nm"] = t.resist.max_value();
+  if (t.scale) j[t.balance_resist ? "resisting_scale" : "drive_scale"] = *t.scale;
   j["inertia_machine_kgm2"] = s.inertia_machine;
   j["inertia_total_kgm2"] = s.inertia_total;
   j["inertia_flywheel_kgm2"] = s.inertia_flywheel;
-  j["energy_lobes"] = jl;
-  if (integrated) j["fluctuation_integrated"] = *integrated;
-  if (linkage) {
+  j["energy_lobes"] = std::move(lobes);
+  if (f.integrated) j["fluctuation_integrated"] = *f.integrated;
+  if (const std::optional<gd::InertiaTable>& linkage = m.load.inertia_table) {
     j["linkage_inertia_min_kgm2"] = linkage->min_inertia();
     j["linkage_inertia_max_kgm2"] = linkage->max_inertia();
     j["linkage_inertia_mean_kgm2"] = linkage->mean_inertia();
   }
+}
 
+}  // namespace
+
+void add_flywheel(const Model& m, Output& out) {
+  const FlywheelQuestion& q = *m.flywheel;
+  const double omega_motor = motor_speed(m, q.mark, "flywheel");
+  const CycleTorques t = cycle_torques(m, q, out);
+  const FlywheelResult f = flywheel_for(m, q, t, omega_motor);
+  report_flywheel(m, t, f, out);
+  nlohmann::json lobes = report_lobes(f.cycle, out);
+  const gd::FlywheelSizing& s = f.sizing;
+  if (!s.flywheel_needed)
+    out.report.warnings.push_back(fmt::format(
+        "no flywheel needed: the machine's own {:.4g} kg*m^2 on the '{}' shaft already keeps the fluctuation at "
+        "{:.4g}, below the {:.4g} asked for",
+        s.inertia_machine, m.load.name, s.fluctuation_without_flywheel, s.fluctuation));
+  flywheel_json(m, t, f, std::move(lobes), out.report.json);
   out.flywheel_inertia = s.inertia_flywheel;
-  out.torque_plot = torque_plot(drive, resist, c, shaft);
+  out.torque_plot = torque_plot(t.drive, t.resist, f.cycle, m.load.name);
 }
 
 }  // namespace gearkit::plugins::dyn

@@ -114,8 +114,15 @@ void read_motor(io::MapReader& root, Model& m) {
   r.finish();
 }
 
+// The speed of the load shaft over the motor's, and so the reduced torques (its inverse) and
+// inertias (its square), stay within these bounds: beyond them a product of stages under- or
+// overflows a double (a thousand 20:50 stages gave 0.4^1000 = 1e-398) or a reduced value leaves
+// the sizes of quantity.hpp. Real drives stay far inside (a worm of 1:100 after 1:100 is 1e-4).
+constexpr double kLargestOverallRatio = 1e6;
+
 void read_stages(io::MapReader& root, Model& m) {
   if (!root.has("stages")) return;
+  double overall = 1;
   for (const YAML::Node& item : root.sequence("stages")) {
     io::MapReader r(item, root.file(), "stage");
     gd::Stage s;
@@ -139,6 +146,11 @@ void read_stages(io::MapReader& root, Model& m) {
       if (!std::isfinite(s.ratio) || s.ratio == 0)
         io::fail_at(r.mark("ratio"), fmt::format("'ratio': expected w_out/w_in, finite and non-zero, found {:g}", s.ratio));
     }
+    overall *= s.ratio;
+    if (!(std::abs(overall) <= kLargestOverallRatio && std::abs(overall) >= 1 / kLargestOverallRatio))
+      io::fail_at(r.mark(), fmt::format("stage '{}': expected an overall ratio w_load/w_motor between 1e-6 and 1e6 in "
+                                        "size, found {:.3g} with this stage",
+                                        s.name, overall));
     s.efficiency = efficiency(r, "efficiency");
     const double inertia = non_negative(r, "inertia", io::Quantity::moment_of_inertia, "kg*m^2");
     const std::string at = r.choice("inertia_at", {"input", "output"}, std::string("output"));

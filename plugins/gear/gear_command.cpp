@@ -141,9 +141,8 @@ int run_gear_command(plugin::CommandContext& context) {
   add_tolerance_options(desc);
   add_rating_options(desc);
   io::add_common_options(desc);
-  desc.add_options()("file", io::po::value<std::string>()->value_name("PAIR.yaml"), "gear-pair file (docs/rating.md)");
   io::po::positional_options_description positional;
-  positional.add("file", 1);
+  io::add_positional_argument(desc, positional, "file", "PAIR.yaml", "gear-pair file (docs/rating.md)", false);
   io::po::variables_map vm;
   if (!io::parse_command_line(with_centre_spelling(context.args), desc, positional, vm, kUsage, context.out)) return 0;
   const Request q = read_request(vm);

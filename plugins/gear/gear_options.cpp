@@ -1,5 +1,6 @@
 #include "gear_options.hpp"
 
+#include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/quantity.hpp>
 
@@ -25,6 +26,12 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 bool given(const io::po::variables_map& vm, const char* key) { return vm.count(key) > 0; }
 
 std::string text_of(const io::po::variables_map& vm, const char* key) { return vm[key].as<std::string>(); }
+
+// A required option is asked for where it is read, so that a bad value of an earlier one is
+// reported before a missing later one (`--z1 x` alone is about --z1, not a missing --z2).
+void require(const io::po::variables_map& vm, const char* key, std::string_view what) {
+  if (!given(vm, key)) fail(key, fmt::format("expected {}, found none (or give a gear-pair file)", what));
+}
 
 int teeth(const io::po::variables_map& vm, const char* key) {
   const std::string s = text_of(vm, key);
@@ -102,7 +109,9 @@ void add_gear_options(io::po::options_description& desc) {
 namespace {
 
 void read_teeth_and_module(const io::po::variables_map& vm, gg::GearPairInput& in) {
+  require(vm, "z1", "the teeth of gear 1");
   in.z1 = teeth(vm, "z1");
+  require(vm, "z2", "the teeth of gear 2");
   in.z2 = teeth(vm, "z2");
   in.internal = vm["internal"].as<bool>();
   in.system = vm["transverse"].as<bool>() ? gg::ModuleSystem::transverse : gg::ModuleSystem::normal;
@@ -111,6 +120,7 @@ void read_teeth_and_module(const io::po::variables_map& vm, gg::GearPairInput& i
     fail("z2", fmt::format("an internal gear (ring) needs more teeth than its pinion: expected z2 > {}, found {}",
                                       in.z1, in.z2));
   }
+  require(vm, "module", "the module");
   in.module = length_mm(vm, "module");
   if (!(in.module > 0.0)) fail("module", fmt::format("expected a module > 0 mm, found {} mm", in.module));
   if (given(vm, "pressure-angle")) {
@@ -205,12 +215,8 @@ void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
     }
     if (o.svg.empty() && o.dxf.empty()) fail("draw", "needs --svg or --dxf");
   }
-  if (given(vm, "tolerance")) {
-    o.tolerance = length_mm(vm, "tolerance");
-    if (!(o.tolerance >= 1e-4 * (1.0 - 1e-9) && o.tolerance <= 1.0)) {
-      fail("tolerance", fmt::format("expected a length from 0.1 um to 1 mm, found {} mm", o.tolerance));
-    }
-  }
+  const io::OptionRange tolerance{1e-4 * (1.0 - 1e-9), 1.0, false, false, "a length from 0.1 um to 1 mm"};
+  if (const auto t = io::quantity_option(vm, "tolerance", io::Quantity::length, "mm", tolerance)) o.tolerance = *t * 1e3;
   if (given(vm, "cutter-teeth")) o.cutter.z_0 = teeth(vm, "cutter-teeth");
   if (given(vm, "cutter-tip-radius")) {
     o.cutter.rho_a0 = length_mm(vm, "cutter-tip-radius");
@@ -221,9 +227,6 @@ void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
 }  // namespace
 
 GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
-  for (const char* key : {"z1", "z2", "module"}) {
-    if (!given(vm, key)) fail(key, "is required (or give a gear-pair file)");
-  }
   GearCommandOptions o;
   read_teeth_and_module(vm, o.input);
   read_rack(vm, o.input);

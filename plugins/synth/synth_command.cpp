@@ -73,9 +73,10 @@ std::string drawing_text(const Output& out, const std::string& path) {
 
 int run_synth_command(plugin::CommandContext& context) {
   po::options_description desc("gearkit synth options");
+  po::positional_options_description positional;
+  io::add_positional_argument(desc, positional, "task", "TASK", "function, motion, path, crank-rocker or dwell");
+  io::add_positional_argument(desc, positional, "file", "FILE", "task file (YAML, see docs/synthesis.md)");
   desc.add_options()
-      ("task", po::value<std::string>()->value_name("TASK"), "function, motion, path, crank-rocker or dwell")
-      ("file", po::value<std::string>()->value_name("FILE"), "task file (YAML, see docs/synthesis.md)")
       ("mechanism,m", po::value<std::string>()->value_name("OUT.yaml"), "write the result as a `gearkit kin` mechanism file")
       ("drawing", po::value<std::string>()->value_name("OUT.svg"), "draw the linkage at its positions (SVG, or DXF by extension)")
       ("plot", po::value<std::string>()->value_name("OUT.svg"), "write the task's chart (structural error, output, transmission angle)")
@@ -83,12 +84,9 @@ int run_synth_command(plugin::CommandContext& context) {
       ("evaluations", po::value<long>()->value_name("N"), "path: objective evaluations (docs/cli.md for the limit)")
       ("restarts", po::value<int>()->value_name("N"), "path: independent optimiser runs (1..64)");
   io::add_common_options(desc);
-  po::positional_options_description positional;
-  positional.add("task", 1).add("file", 1);
   po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
-  if (!vm.count("task") || !vm.count("file")) throw io::InputError(fmt::format("missing the task or its file; usage: {}", usage));
 
   const Output out = run_task(vm["task"].as<std::string>(), vm["file"].as<std::string>(), read_overrides(vm));
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders

@@ -38,7 +38,7 @@ namespace {
 constexpr std::string_view usage =
     "gearkit train FILE [--fix MEMBER]... [--couple A=B]... [--input MEMBER[=SPEED]]... [--output-member MEMBER] "
     "[--torque MEMBER=TORQUE | --power MEMBER=POWER] [--mesh-efficiency ETA] [--modes] [--svg FILE] [--dxf FILE] "
-    "[--format text|json|csv|md|html]\n"
+    "[options]\n"
     "       gearkit train synth reducer|planetary ... (see gearkit train synth --help)";
 
 constexpr double rpm_per_rad_s = 60.0 / (2.0 * std::numbers::pi);
@@ -418,15 +418,8 @@ void add_pictures(const po::variables_map& vm, const gt::TrainModel& model, cons
   if (vm.count("dxf")) outputs.add("--dxf", vm["dxf"].as<std::string>(), io::to_dxf(drawing));
 }
 
-}  // namespace
-
-int run_train_command(plugin::CommandContext& context) {
-  if (!context.args.empty() && context.args.front() == "synth")
-    return run_train_synth_command(context, {context.args.begin() + 1, context.args.end()});
-
-  po::options_description desc("gearkit train options");
+void add_train_options(po::options_description& desc) {
   desc.add_options()
-      ("file", po::value<std::string>()->value_name("FILE"), "train model (YAML, see docs/train.md)")
       ("fix", po::value<std::vector<std::string>>()->value_name("MEMBER"), "hold MEMBER still (repeatable)")
       ("couple", po::value<std::vector<std::string>>()->value_name("A=B"), "members A and B turn together (repeatable)")
       ("input", po::value<std::vector<std::string>>()->value_name("MEMBER[=SPEED]"),
@@ -437,7 +430,7 @@ int run_train_command(plugin::CommandContext& context) {
        "a torque applied to MEMBER (N*m by default); the others follow from equilibrium")
       ("power", po::value<std::string>()->value_name("MEMBER=POWER"), "power fed to MEMBER (W by default)")
       ("rate", po::bool_switch(), "load capacity of every mesh (docs/rating.md; face widths and materials in the file)")
-      ("mesh-efficiency", po::value<double>()->value_name("ETA"),
+      ("mesh-efficiency", io::number_in({0, 1, true, false, "a basic efficiency in (0, 1]"})->value_name("ETA"),
        "basic efficiency eta_0 of the meshes without their own 'efficiency' (default 1)")
       ("modes", "ratio w_out/w_in with each other member held fixed in turn, and with pairs coupled")
       ("willis", po::value<std::string>()->value_name("M1,M2,..."),
@@ -448,24 +441,11 @@ int run_train_command(plugin::CommandContext& context) {
        "write the stick diagram of the train and the speed diagram of its planetary stages as SVG")
       ("dxf", po::value<std::string>()->value_name("FILE"), "write the same drawing as DXF R2000");
   io::add_common_options(desc);
-  po::positional_options_description positional;
-  positional.add("file", 1);
-  po::variables_map vm;
-  if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
-  const io::CommonOptions common = io::common_options(vm);
-  if (!vm.count("file"))
-    throw io::InputError("expected the FILE argument, found none; usage: gearkit train FILE [options] (see --help)");
+}
 
-  double default_efficiency = 1.0;
-  if (vm.count("mesh-efficiency")) {
-    default_efficiency = vm["mesh-efficiency"].as<double>();
-    if (!(default_efficiency > 0 && default_efficiency <= 1))
-      io::fail_option("--mesh-efficiency", fmt::format("expected a value in (0, 1], found {}", default_efficiency));
-  }
-  const TrainFile file = load_train_file(vm["file"].as<std::string>(), default_efficiency);
-  const gt::TrainModel& model = file.model;
-  const Conditions conditions = gather_conditions(model, vm, file.analysis);
-
+/// The output member from --output-member or the file's analysis, if any.
+std::optional<gt::MemberId> output_member(const gt::TrainModel& model, const po::variables_map& vm,
+                                          const TrainFile& file) {
   std::optional<gt::MemberId> output;
   if (vm.count("output-member")) {
     output = parse_member(model, vm["output-member"].as<std::string>(), fail_with(Origin{"output-member", {}}));
@@ -473,6 +453,101 @@ int run_train_command(plugin::CommandContext& context) {
     output = parse_member(model, file.analysis.output->text, fail_with(Origin{"", file.analysis.output->mark}));
   }
   if (output && *output == gt::ground) io::fail_option("--output-member", "expected a moving member, found 'ground'");
+  return output;
+}
+
+/// What the speed part of the report needs from the conditions and their solution.
+struct Kinematics {
+  const gt::TrainModel& model;
+  const Conditions& conditions;
+  const gt::SpeedSolution& solution;
+  std::optional<gt::MemberId> output;
+  std::optional<std::vector<double>> speeds_rad_s;  ///< the input speeds, when every input has one
+};
+
+/// Torques (--torque or --power at a member) and, with --rate, the load capacity of the meshes.
+void add_load(io::Report& report, const po::variables_map& vm, const Kinematics& k) {
+  const bool is_torque = vm.count("torque") > 0;
+  const std::string option = is_torque ? "torque" : "power";
+  const auto fail = fail_with(Origin{option, {}});
+  if (!k.output) io::fail_option("--" + option, "needs --output-member MEMBER (where the load acts)");
+  auto [member, value] = parse_member_quantity(k.model, vm[option].as<std::string>(),
+                                               is_torque ? io::Quantity::torque : io::Quantity::power,
+                                               is_torque ? "N*m" : "W", fail);
+  if (k.solution.inputs.empty()) io::fail_option("--" + option, "needs at least one --input MEMBER");
+  check_torque_member(k.model, k.conditions, member, *k.output, option);
+  bool all_determined = true;
+  for (const auto& sp : k.solution.speeds) all_determined = all_determined && sp.determined;
+  if (!all_determined) {
+    report.warnings.push_back("no torques: the conditions leave the speeds under-determined");
+    return;
+  }
+  const std::vector<double> w = k.speeds_rad_s ? *k.speeds_rad_s : std::vector<double>(k.solution.inputs.size(), 1.0);
+  if (!k.speeds_rad_s)
+    report.notes.push_back("No input speed given: powers are shown for 1 rad/s at each input (torques do not "
+                           "depend on it)");
+  if (!is_torque) {
+    if (!k.speeds_rad_s) io::fail_option("--power", "needs input speeds (--input MEMBER=SPEED) to turn power into torque");
+    const double omega = gt::speed_value(k.solution, member, w);
+    if (omega == 0) io::fail_option("--power", fmt::format("member '{}' does not turn; give a torque instead",
+                                                         k.model.member(member).name));
+    value /= omega;
+  }
+  add_torques(report, k.model, k.solution, k.conditions, w, *k.output, member, value);
+  if (vm["rate"].as<bool>()) {
+    if (!k.speeds_rad_s) io::fail_option("--rate", "needs the input speeds (--input MEMBER=SPEED)");
+    add_mesh_ratings(report, vm["file"].as<std::string>(), k.model, k.solution, k.conditions.list, w, *k.output,
+                     member, value);
+  }
+}
+
+/// Speeds, the ratio and the modes for the conditions.
+void add_kinematics(io::Report& report, const po::variables_map& vm, const Kinematics& k) {
+  nlohmann::json labels = nlohmann::json::array();
+  for (const auto& c : k.conditions.list) labels.push_back(c.label);
+  report.json["conditions"] = labels;
+  if (!k.conditions.list.empty()) add_speeds(report, k.model, k.solution, k.conditions, k.output, k.speeds_rad_s);
+  if (k.output && !k.conditions.list.empty()) add_ratio(report, k.model, k.solution, k.conditions, *k.output);
+  if (vm.count("modes")) {
+    if (!k.output) io::fail_option("--modes", "needs --output-member MEMBER (and one --input)");
+    if (k.solution.inputs.size() != 1) io::fail_option("--modes", "needs exactly one --input MEMBER");
+    add_modes(report, k.model, k.conditions, k.conditions.list[k.solution.inputs[0]].member, *k.output);
+  }
+}
+
+/// --centre-tolerance in mm (default 0.001 mm).
+double centre_tolerance_mm(const po::variables_map& vm) {
+  const io::OptionRange range{0, 1e7, false, false, "a length from 0 to 10 km"};  // 10 km: the generic limit
+  return io::quantity_option(vm, "centre-tolerance", io::Quantity::length, "mm", range).value_or(1e-6) * 1e3;
+}
+
+/// The input speeds in rad/s when every input has one.
+std::optional<std::vector<double>> input_speeds(const Conditions& conditions) {
+  if (conditions.input_speeds_rad_s.empty() || !conditions.input_speeds_rad_s.front()) return std::nullopt;
+  std::vector<double> speeds;
+  for (const auto& s : conditions.input_speeds_rad_s) speeds.push_back(*s);
+  return speeds;
+}
+
+}  // namespace
+
+int run_train_command(plugin::CommandContext& context) {
+  if (!context.args.empty() && context.args.front() == "synth")
+    return run_train_synth_command(context, {context.args.begin() + 1, context.args.end()});
+
+  po::options_description desc("gearkit train options");
+  po::positional_options_description positional;
+  io::add_positional_argument(desc, positional, "file", "FILE", "train model (YAML, see docs/train.md)");
+  add_train_options(desc);
+  po::variables_map vm;
+  if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
+  const io::CommonOptions common = io::common_options(vm);
+
+  const double default_efficiency = vm.count("mesh-efficiency") ? vm["mesh-efficiency"].as<double>() : 1.0;
+  const TrainFile file = load_train_file(vm["file"].as<std::string>(), default_efficiency);
+  const gt::TrainModel& model = file.model;
+  const Conditions conditions = gather_conditions(model, vm, file.analysis);
+  const std::optional<gt::MemberId> output = output_member(model, vm, file);
 
   io::Report report;
   report.title = "Gear train: " + (model.name().empty() ? vm["file"].as<std::string>() : model.name());
@@ -487,73 +562,17 @@ int run_train_command(plugin::CommandContext& context) {
   } catch (const gt::ConditionError& e) {
     fail_from(conditions.origins.at(e.index()), e.what());
   }
-  nlohmann::json labels = nlohmann::json::array();
-  for (const auto& c : conditions.list) labels.push_back(c.label);
-  report.json["conditions"] = labels;
-
-  std::optional<std::vector<double>> speeds_rad_s;
-  if (!conditions.input_speeds_rad_s.empty() && conditions.input_speeds_rad_s.front()) {
-    speeds_rad_s.emplace();
-    for (const auto& s : conditions.input_speeds_rad_s) speeds_rad_s->push_back(*s);
-  }
-  if (!conditions.list.empty()) add_speeds(report, model, solution, conditions, output, speeds_rad_s);
-  if (output && !conditions.list.empty()) add_ratio(report, model, solution, conditions, *output);
-
-  if (vm.count("modes")) {
-    if (!output) io::fail_option("--modes", "needs --output-member MEMBER (and one --input)");
-    if (solution.inputs.size() != 1) io::fail_option("--modes", "needs exactly one --input MEMBER");
-    add_modes(report, model, conditions, conditions.list[solution.inputs[0]].member, *output);
-  }
-
+  const Kinematics kinematics{model, conditions, solution, output, input_speeds(conditions)};
+  add_kinematics(report, vm, kinematics);
   if (vm.count("torque") && vm.count("power")) io::fail_option("--power", "give either --torque or --power, not both");
   if (vm.count("torque") || vm.count("power")) {
-    const bool is_torque = vm.count("torque") > 0;
-    const std::string option = is_torque ? "torque" : "power";
-    const auto fail = fail_with(Origin{option, {}});
-    if (!output) io::fail_option("--" + option, "needs --output-member MEMBER (where the load acts)");
-    auto [member, value] = parse_member_quantity(model, vm[option].as<std::string>(),
-                                                 is_torque ? io::Quantity::torque : io::Quantity::power,
-                                                 is_torque ? "N*m" : "W", fail);
-    if (solution.inputs.empty()) io::fail_option("--" + option, "needs at least one --input MEMBER");
-    check_torque_member(model, conditions, member, *output, option);
-    bool all_determined = true;
-    for (const auto& sp : solution.speeds) all_determined = all_determined && sp.determined;
-    if (!all_determined) {
-      report.warnings.push_back("no torques: the conditions leave the speeds under-determined");
-    } else {
-      const std::vector<double> w = speeds_rad_s ? *speeds_rad_s : std::vector<double>(solution.inputs.size(), 1.0);
-      if (!speeds_rad_s)
-        report.notes.push_back("No input speed given: powers are shown for 1 rad/s at each input (torques do not "
-                               "depend on it)");
-      if (!is_torque) {
-        if (!speeds_rad_s) io::fail_option("--power", "needs input speeds (--input MEMBER=SPEED) to turn power into torque");
-        const double omega = gt::speed_value(solution, member, w);
-        if (omega == 0) io::fail_option("--power", fmt::format("member '{}' does not turn; give a torque instead",
-                                                             model.member(member).name));
-        value /= omega;
-      }
-      add_torques(report, model, solution, conditions, w, *output, member, value);
-      if (vm["rate"].as<bool>()) {
-        if (!speeds_rad_s) io::fail_option("--rate", "needs the input speeds (--input MEMBER=SPEED)");
-        add_mesh_ratings(report, vm["file"].as<std::string>(), model, solution, conditions.list, w, *output, member, value);
-      }
-    }
+    add_load(report, vm, kinematics);
   } else if (vm["rate"].as<bool>()) {
     io::fail_option("--rate", "needs the load: --torque MEMBER=TORQUE or --power MEMBER=POWER");
   }
-
-  double tolerance_mm = 1e-3;
-  if (vm.count("centre-tolerance")) {
-    try {
-      tolerance_mm = io::parse_quantity_si(vm["centre-tolerance"].as<std::string>(), io::Quantity::length, "mm") * 1e3;
-    } catch (const io::QuantityError& e) {
-      io::fail_option("--centre-tolerance", e.what());
-    }
-    if (!(tolerance_mm >= 0)) io::fail_option("--centre-tolerance", "expected a length >= 0");
-  }
-  add_assembly(report, model, tolerance_mm);
+  add_assembly(report, model, centre_tolerance_mm(vm));
   io::OutputSet outputs(context.out);
-  add_pictures(vm, model, conditions, solution, output, speeds_rad_s, report.title.substr(12), outputs);
+  add_pictures(vm, model, conditions, solution, output, kinematics.speeds_rad_s, report.title.substr(12), outputs);
   return io::emit(report, common, outputs);
 }
 

@@ -1,5 +1,6 @@
 #include "train_file.hpp"
 
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
@@ -32,8 +33,18 @@ std::string member_name(const YAML::Node& node, const std::string& file, const s
   return name;
 }
 
+// The entries of `key`, refused beyond `limit` at the first entry too many (docs/cli.md, Limits).
+std::vector<YAML::Node> limited_sequence(io::MapReader& root, const char* key, std::size_t limit) {
+  std::vector<YAML::Node> items = root.sequence(key);
+  if (items.size() > limit)
+    io::fail_at(io::mark_of(items[limit], root.file()),
+                fmt::format("'{}': expected at most {} entries (docs/cli.md, Limits), found {}", key, limit,
+                            items.size()));
+  return items;
+}
+
 void read_members(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldMarks>& marks) {
-  const std::vector<YAML::Node> items = root.sequence("members");
+  const std::vector<YAML::Node> items = limited_sequence(root, "members", io::limits::kTrainMembers);
   // The ground is implicit: a train of nothing but the ground has nothing to turn.
   if (items.empty()) io::fail_at(root.mark("members"), "'members': expected at least one member, found none");
   for (const YAML::Node& item : items) {
@@ -74,7 +85,7 @@ GearDefaults read_gear_defaults(io::MapReader& root) {
 void read_gears(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldMarks>& marks) {
   const GearDefaults defaults = read_gear_defaults(root);
   const io::SourceMark root_alpha = root.mark("pressure_angle"), root_beta = root.mark("helix_angle");
-  for (const YAML::Node& item : root.sequence("gears")) {
+  for (const YAML::Node& item : limited_sequence(root, "gears", io::limits::kTrainGears)) {
     io::MapReader r(item, root.file(), "gear");
     gt::GearSpec spec;
     spec.name = r.string("name");
@@ -103,7 +114,7 @@ void read_gears(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldM
 
 void read_meshes(io::MapReader& root, gt::TrainDescription& d, std::vector<FieldMarks>& marks,
                  double default_efficiency) {
-  for (const YAML::Node& item : root.sequence("meshes")) {
+  for (const YAML::Node& item : limited_sequence(root, "meshes", io::limits::kTrainMeshes)) {
     io::MapReader r(item, root.file(), "mesh");
     gt::MeshSpec spec;
     if (const auto name = r.optional_string("name")) spec.name = *name;

@@ -56,14 +56,7 @@ int integer_option(const po::variables_map& vm, const char* key, int fallback, i
   return static_cast<int>(v);
 }
 
-double tolerance_option(const po::variables_map& vm) {
-  if (!vm.count("tolerance")) return 1e-6;
-  const double t = vm["tolerance"].as<double>();
-  if (!(t >= 0 && t <= io::limits::kSynthTolerance))
-    io::fail_option("--tolerance", fmt::format("expected a relative tolerance from 0 to {:g}, found {:g}",
-                                               io::limits::kSynthTolerance, t));
-  return t;
-}
+double tolerance_option(const po::variables_map& vm) { return vm.count("tolerance") ? vm["tolerance"].as<double>() : 1e-6; }
 
 double module_option(const po::variables_map& vm, const char* key) {
   if (!vm.count(key)) io::fail_option(std::string("--") + key, "missing: the module of the stage (mm by default)");
@@ -94,7 +87,9 @@ void add_common_synth_options(po::options_description& desc) {
   desc.add_options()
       ("kind", po::value<std::string>()->value_name("reducer|planetary"), "what to synthesise")
       ("ratio", po::value<std::string>()->value_name("RATIO"), "target w_out/w_in, e.g. 1/16 or 0.0625")
-      ("tolerance", po::value<double>()->value_name("T"), "accepted relative ratio error (default 1e-6)")
+      ("tolerance", io::number_in({0, io::limits::kSynthTolerance, false, false, "a relative tolerance from 0 to 0.1"})
+                        ->value_name("T"),
+       "accepted relative ratio error (default 1e-6)")
       ("z-min", po::value<long long>()->value_name("Z"), "fewest teeth (default 12)")
       ("z-max", po::value<long long>()->value_name("Z"), "most teeth (default 150)")
       ("max-results", po::value<long long>()->value_name("N"), "candidates listed (default 20)");

@@ -4,9 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 using gearkit::testing::run_gearkit;
 using gearkit::testing::shell_quote;
@@ -47,4 +50,22 @@ TEST(Demo, UnwritableFolderIsBadInput) {
   auto r = run_gearkit("demo --output " + shell_quote((dir / "file" / "sub").string()));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("option '--output': cannot create folder"), std::string::npos) << r.err;
+}
+
+TEST(Demo, AllOrNothingAndTheOptionTheUserGave) {
+  // Issue 11 item B: a folder in the way of cam.svg made the demo exit 2 after writing four
+  // files, blaming '--svg', an option the user never typed.
+  fs::path dir = gearkit::testing::scratch_dir("demo_all_or_nothing");
+  fs::create_directories(dir / "cam.svg");
+  std::ofstream(dir / "gear-table.txt") << "old\n";
+  auto r = run_gearkit("demo --output " + shell_quote(dir.string()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("gearkit: option '--output': cannot write '", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("': it is a folder"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--svg"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(dir / "gear-table.txt"), "old\n");
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"cam.svg", "gear-table.txt"}));
 }

@@ -83,9 +83,22 @@ TEST(Limits, GearDrawingsAreBounded) {
 TEST(Limits, ValuesThatWouldMakeAResultNonFiniteAreRefusedWhereTheyEnter) {
   expect_quick_refusal("cam " + example("cams/translating_roller_cycloidal.yaml") +
                            " --cutter-radius 1e200 --dxf /dev/null",
-                       "option '--cutter-radius': expected a length of size 0 or between");
+                       "option '--cutter-radius': expected a radius > 0 and up to 10000 mm, found '1e200'");
+  // Issue 11 item D: the message stated the generic sizes of a plain number ("between 1e-15 and
+  // 1e+09") although the option takes (0, 1]: an option's own range comes first.
   expect_quick_refusal("train " + example("trains/simple_planetary.yaml") + " --mesh-efficiency 1e-300",
-                       "option '--mesh-efficiency'");
+                       "option '--mesh-efficiency': expected a basic efficiency in (0, 1] and at least 1e-15, "
+                       "found 1e-300");
+  expect_quick_refusal("train " + example("trains/simple_planetary.yaml") + " --mesh-efficiency 1e300",
+                       "option '--mesh-efficiency': expected a basic efficiency in (0, 1], found 1e+300");
+  expect_quick_refusal("train synth reducer --m1 2 --m2 2 --ratio 1/12 --tolerance 1e20",
+                       "option '--tolerance': expected a relative tolerance from 0 to 0.1, found 1e+20");
+  expect_quick_refusal("gear --z1 12 --z2 24 --module 3 --tolerance 1e-300",
+                       "option '--tolerance': expected a length from 0.1 um to 1 mm, found '1e-300'");
+  expect_quick_refusal("cam " + example("cams/translating_roller_cycloidal.yaml") + " --feed 1e300",
+                       "option '--feed': expected a feed > 0 and up to 60000 mm/min, found '1e300'");
+  expect_quick_refusal("train " + example("trains/simple_planetary.yaml") + " --centre-tolerance 1e300",
+                       "option '--centre-tolerance': expected a length from 0 to 10 km, found '1e300'");
   std::ifstream in(kExamples / "dynamics" / "otm2015_p4_flywheel.yaml");
   std::stringstream text;
   text << in.rdbuf();

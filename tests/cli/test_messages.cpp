@@ -91,6 +91,26 @@ TEST(Messages, OptionsAndArgumentsAreNamedAsTyped) {
                         "option '--speed-plot'");
   expect_one_line_error(run_gearkit("cam"), "expected the FILE argument, found none");
   expect_one_line_error(run_gearkit("train"), "expected the FILE argument, found none");
+  // One wording for a missing positional argument in every command (issue 12: dyn said "missing
+  // the model file", synth "missing the task or its file").
+  expect_one_line_error(run_gearkit("dyn"), "expected the FILE argument, found none");
+  expect_one_line_error(run_gearkit("dyn --format json"), "expected the FILE argument, found none");
+  expect_one_line_error(run_gearkit("synth"), "expected the TASK argument, found none");
+  expect_one_line_error(run_gearkit("synth path"), "expected the FILE argument, found none");
+  // Issue 11 item E: Boost's own wording leaked ("the argument ('x') for option ... is invalid").
+  const std::string sp = shell_quote((kExamples / "trains" / "simple_planetary.yaml").string());
+  expect_one_line_error(run_gearkit("train " + sp + " --mesh-efficiency x"),
+                        "option '--mesh-efficiency': expected a number, found 'x'");
+  expect_one_line_error(
+      run_gearkit("synth path " + shell_quote((kExamples / "synthesis" / "path_ellipse.yaml").string()) +
+                  " --evaluations 1e300"),
+      "option '--evaluations': expected a whole number, found '1e300'");
+  expect_one_line_error(run_gearkit("gear --z1 12 --z2 24 --module 3 --centre-distance 55 --center-distance 56"),
+                        "option '--centre-distance': expected it once, found it 2 times");
+  expect_one_line_error(run_gearkit("--frobnicate"), "option '--frobnicate': expected an option listed by --help");
+  // Issue 11 item F: a bad --z1 was reported as a missing --z2.
+  expect_one_line_error(run_gearkit("gear --z1 x"), "option '--z1': expected a whole number of teeth, found 'x'");
+  expect_one_line_error(run_gearkit("gear --z1 12 --module 3"), "option '--z2': expected the teeth of gear 2, found none");
   auto synth = run_gearkit("train synth gearbox --ratio 3");
   expect_one_line_error(synth, "train synth: expected 'reducer' or 'planetary'");
   EXPECT_EQ(synth.err.find("gearkit: gearkit"), std::string::npos) << synth.err;

@@ -121,8 +121,40 @@ TEST(OutputFiles, DevicesStayDevicesDashIsStandardOutputAndEmptyIsRefused) {
   EXPECT_FALSE(fs::exists("-"));
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --output ''"), "option '--output': expected a value");
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg ''"), "option '--svg': expected a value");
+  // Issue 11 item F: the refusal blamed '--output', which the user had not typed.
   expect_refused(run_gearkit("gear --z1 12 --z2 24 --module 3 --svg -"),
-                 "option '--output': cannot write '-': standard output already receives the output of '--svg'");
+                 "option '--svg': cannot write '-': standard output receives the report; give --output FILE");
+  expect_refused(run_gearkit("cam " + q(kExamples / "cams" / "translating_roller_cycloidal.yaml") + " --svg -"),
+                 "option '--svg': cannot write '-': standard output receives the report");
+  auto svg_to_stdout = run_gearkit("gear --z1 12 --z2 24 --module 3 --svg - --output /dev/null");
+  EXPECT_EQ(svg_to_stdout.status, 0) << svg_to_stdout.err;
+  EXPECT_EQ(svg_to_stdout.out.rfind("<?xml", 0), 0u) << svg_to_stdout.out.substr(0, 200);
+}
+
+TEST(OutputFiles, StandardOutputOpenedOnAnInputIsRefused) {
+  // Issue 11 item C: `gearkit train sp2.yaml 1<>sp2.yaml` exited 0 and wrote the report over the
+  // model (`>>` appended to it). The shell opens standard output before gearkit runs, so the
+  // check is fstat(1) against the input files, before anything is written.
+  auto dir = gearkit::testing::scratch_dir("cli_stdout_input");
+  fs::path train = copy_example(dir, "trains/simple_planetary.yaml");
+  fs::path kin = copy_example(dir, "mechanisms/four_bar.yaml");
+  const std::string train_text = slurp(train), kin_text = slurp(kin);
+  const fs::path err = dir / "err.txt";
+  const auto run = [&](const std::string& args_and_redirection) {
+    const std::string cmd = shell_quote(GEARKIT_EXE) + " " + args_and_redirection + " 2>" + q(err);
+    const int raw = std::system(cmd.c_str());
+    return gearkit::testing::RunResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, "", slurp(err)};
+  };
+  expect_refused(run("train " + q(train) + " 1<>" + q(train)), "standard output is the input file");
+  expect_refused(run("train " + q(train) + " --format json >>" + q(train)), "refusing to write over an input");
+  expect_refused(run("train " + q(train) + " --output - 1<>" + q(train)), "standard output is the input file");
+  expect_refused(run("kin " + q(kin) + " --sweep 0:360:10 1<>" + q(kin)), "standard output is the input file");
+  EXPECT_EQ(slurp(train), train_text);
+  EXPECT_EQ(slurp(kin), kin_text);
+  // Standard output on another file, or the report in a file while stdout is the model: fine.
+  EXPECT_EQ(run("train " + q(train) + " >" + q(dir / "report.txt")).status, 0);
+  EXPECT_EQ(run("train " + q(train) + " --output " + q(dir / "r.txt") + " 1<>" + q(train)).status, 0);
+  EXPECT_EQ(slurp(train), train_text);
 }
 
 // --table and CSV (docs/cli.md, "Tables and formats"): a CSV holds one table and nothing else, so

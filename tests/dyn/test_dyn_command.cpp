@@ -193,7 +193,7 @@ TEST(DynCommand, BadInputNamesThePlace) {
   expect_bad_input(run_gearkit("dyn " + shell_quote(write_model("none.yaml", "motor: {speed: 1000 rpm}\n").string())),
                    "at least one question");
   expect_bad_input(run_gearkit("dyn /nonexistent/model.yaml"), "/nonexistent/model.yaml");
-  expect_bad_input(run_gearkit("dyn"), "missing the model file");
+  expect_bad_input(run_gearkit("dyn"), "expected the FILE argument, found none");
 }
 
 TEST(DynCommand, ZeroInertiaIsAnError) {
@@ -291,4 +291,24 @@ TEST(DynCommand, ATorqueTableThatIsNotPeriodicIsAnErrorAtTheTable) {
   triple.replace(triple.find("- [10 rev, 22.5 N*m]"), 20, "- [10 rev, 22.5 N*m]\n      - [10 rev, 30 N*m]\n      - [10 rev, 22.5 N*m]");
   const fs::path q = write_model("triple_row.yaml", triple);
   expect_bad_input(run_gearkit("dyn " + shell_quote(q.string())), q.string() + ":");
+}
+
+TEST(DynCommand, TheOverallRatioOfTheStagesIsBounded) {
+  // Fuzz campaign 2026-11-27 (tests/fuzz/corpus/g-dyn-1000-stages.json): a thousand 20:50 stages
+  // make w_load/w_motor = 0.4^1000 = 1e-398, which underflowed to 0 and ended as "internal error:
+  // curve: point 1 is not finite". The product is bounded to 1e-6..1e6 at the stage that leaves it:
+  // 0.4^15 = 1.07e-6 is inside, 0.4^16 = 4.29e-7 is not.
+  const auto stages = [](int n) {
+    std::string t = "motor: {speed: 2950 rpm, power: 100 kW}\nstages:\n";
+    for (int i = 0; i < n; ++i) t += "  - {name: g" + std::to_string(i) + ", teeth: [20, 50]}\n";
+    return t + "load:\n  inertia: 0.1 kg*m^2\n  resisting:\n    table: [[0, 0], [180, 1], [360, 0]]\n"
+               "    scale: balance\nflywheel: {fluctuation: 0.005}\n";
+  };
+  const auto ok = run_gearkit("dyn " + shell_quote(write_model("stages15.yaml", stages(15)).string()) + " --format json");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  expect_bad_input(run_gearkit("dyn " + shell_quote(write_model("stages16.yaml", stages(16)).string())),
+                   "stages16.yaml:18:5: stage 'g15': expected an overall ratio w_load/w_motor between 1e-6 and 1e6 in "
+                   "size, found 4.29e-07");
+  expect_bad_input(run_gearkit("dyn " + shell_quote(write_model("stages1000.yaml", stages(1000)).string())),
+                   "stage 'g15': expected an overall ratio");
 }

@@ -208,34 +208,85 @@ def mutate_file(rng, text):
 # flag, range (START:END:STEP), or a list of choices.
 
 TRAIN_MEMBERS = ["sun", "ring", "carrier", "planet", "ring1", "ring2", "s", "c", "r", "x", "sun1", "sun2", "arm"]
+MATERIALS = ["18CrNiMo7-6", "16MnCr5", "42CrMo4", "C45", "42CrMo4-induction", "31CrMoV9-nitrided", "S355",
+             "GJL-250", "GJS-700", "case_carburized:MQ:700", "steel", "x:y:z"]
+FACTORS = ["K_v", "K_Hbeta", "K_Halpha", "K_Fbeta", "Z_NT1", "Y_NT1", "Y_F", "J1", "K_A", "Z_E", "x"]
+
+# The rating options that `gear` (with a pair) and `gear size` share (docs/rating.md).
+RATING = {
+    "--torque1": "num:N*m", "--power": "num:kW", "--speed1": "num:rpm", "--material1": MATERIALS,
+    "--material2": MATERIALS, "--method": ["iso6336", "agma", "lewis-hertz", "x"], "--application-factor": "num:",
+    "--life": "num:h", "--oil-viscosity": "num:", "--flank-roughness": "num:", "--flank-rz": "num:",
+    "--root-roughness": "num:", "--protuberance": "num:", "--f-pb": "num:", "--f-falpha": "num:",
+    "--F-betax": "num:", "--f-ma": "num:", "--f-sh": "num:", "--tip-relief": "num:", "--rim1": "num:mm",
+    "--rim2": "num:mm", "--min-safety-pitting": "num:", "--min-safety-bending": "num:", "--limited-pitting": "flag",
+    "--optimum-long-life": "flag", "--root-shift": ["generating", "nominal", "x"], "--agma-quality": "int",
+    "--reliability": "num:", "--mounting": ["open", "commercial", "precision", "extra-precision", "x"],
+    "--crowned": "flag", "--lewis-profile": ["cast", "cut", "hobbed", "ground", "x"], "--factor": "factor"}
+# Accuracy, inspection and backlash options of `gear` (docs/gear.md).
+TOLERANCES = {
+    "--quality": "grades", "--iso1328-edition": ["2013", "1995", "2020", "x"], "--thickness-allowances1": "pair",
+    "--thickness-allowances2": "pair", "--din3967": ["27cd", "26cd,27cd", "25f", "29x", "x"],
+    "--min-backlash": "num:mm", "--centre-distance-tolerance": ["js7", "js9", "js0", "js20", "x"],
+    "--centre-distance-allowances": "pair", "--temperature": "pair", "--expansion": "triple"}
+GEAR = {
+    "--z1": "int", "--z2": "int", "--module": "num:mm", "--pressure-angle": "num:deg", "--helix-angle": "num:deg",
+    "--x1": "num:", "--x2": "num:", "--centre-distance": "num:mm", "--center-distance": "num:mm",
+    "--split": ["balanced", "proportional", "user"], "--internal": "flag", "--transverse": "flag",
+    "--no-tip-shortening": "flag", "--addendum": "num:", "--dedendum": "num:", "--root-radius": "num:",
+    "--face-width": "num:mm", "--backlash": "num:mm", "--allowance1": "num:mm", "--allowance2": "num:mm",
+    "--centre-distance-deviation": "num:mm", "--pin-diameter": "num:mm", "--pin-diameter1": "num:mm",
+    "--pin-diameter2": "num:mm", "--svg": "path", "--dxf": "path", "--draw": ["pair", "gear1", "gear2", "x"],
+    "--tolerance": "num:um", "--cutter-teeth": "int", "--cutter-tip-radius": "num:mm"}
+SIZE = {
+    "--ratio": "num:", "--ratio-tolerance": "num:", "--modules": "list", "--z1-min": "int", "--z1-max": "int",
+    "--shifts": "list", "--helix-angle": "num:deg", "--pressure-angle": "num:deg", "--width-ratio-max": "num:",
+    "--width-module-min": "num:", "--count": "int", "--quality": "grades"}
+SYNTH_TASKS = {"crank_rocker": "crank-rocker", "dwell": "dwell", "five_positions": "motion",
+               "four_positions": "motion", "three_positions": "motion", "two_positions": "motion",
+               "function_log10": "function", "function_slider": "function", "path_ellipse": "path"}
+
+# Each command: "files" (an examples/ folder for the FILE argument, or None), "base" (words always
+# given), "task" (words before the file: a subcommand chosen from the file's name) and "options".
 COMMANDS = {
-    "gear": {"files": None, "base": ["--z1", "12", "--z2", "24", "--module", "3"], "options": {
-        "--z1": "int", "--z2": "int", "--module": "num:mm", "--pressure-angle": "num:deg", "--helix-angle": "num:deg",
-        "--x1": "num:", "--x2": "num:", "--centre-distance": "num:mm", "--split": ["balanced", "proportional", "user"],
-        "--internal": "flag", "--transverse": "flag", "--no-tip-shortening": "flag", "--addendum": "num:",
-        "--dedendum": "num:", "--root-radius": "num:", "--face-width": "num:mm", "--backlash": "num:mm",
-        "--allowance1": "num:mm", "--allowance2": "num:mm", "--centre-distance-deviation": "num:mm",
-        "--pin-diameter": "num:mm", "--pin-diameter1": "num:mm", "--pin-diameter2": "num:mm", "--svg": "path", "--dxf": "path",
-        "--draw": ["pair", "gear1", "gear2", "x"]}},
+    "gear": {"files": None, "base": ["--z1", "12", "--z2", "24", "--module", "3"],
+             "options": dict(GEAR, **TOLERANCES, **RATING)},
+    "gear file": {"files": "gears", "base": [], "options": dict(TOLERANCES, **RATING, **{
+        k: GEAR[k] for k in ("--svg", "--dxf", "--draw", "--tolerance", "--cutter-teeth", "--cutter-tip-radius")})},
+    "gear size": {"files": None, "base": ["--ratio", "3.5", "--torque1", "500", "--speed1", "1450", "--material1",
+                                          "18CrNiMo7-6", "--material2", "18CrNiMo7-6"],
+                  "options": dict(RATING, **SIZE)},
     "train": {"files": "trains", "base": [], "options": {
         "--fix": "member", "--couple": "A=B", "--input": "member=num:rpm", "--output-member": "member",
         "--torque": "member=num:N*m", "--power": "member=num:kW", "--mesh-efficiency": "plain", "--modes": "flag",
-        "--centre-tolerance": "num:mm"}},
+        "--centre-tolerance": "num:mm", "--rate": "flag", "--willis": "names"}},
     "train synth": {"files": None, "base": ["reducer", "--m1", "2", "--m2", "2", "--ratio", "1/12"], "options": {
         "--ratio": "num:", "--tolerance": "plain", "--z-min": "int", "--z-max": "int", "--max-results": "int",
-        "--m1": "num:mm", "--m2": "num:mm", "--z1": "int", "--equal-stages": "flag", "--planets": "int",
-        "--fixed": ["sun", "carrier", "ring", "x"], "--input": ["sun", "carrier", "ring"],
+        "--m1": "num:mm", "--m2": "num:mm", "--z1": "int", "--equal-stages": "flag"}},
+    "train synth planetary": {"files": None, "base": ["planetary", "--ratio", "1/5"], "options": {
+        "--ratio": "num:", "--tolerance": "plain", "--z-min": "int", "--z-max": "int", "--max-results": "int",
+        "--planets": "int", "--fixed": ["sun", "carrier", "ring", "x"], "--input": ["sun", "carrier", "ring"],
         "--output-member": ["sun", "carrier", "ring"], "--z-ring-max": "int"}},
     "cam": {"files": "cams", "base": [], "options": {
         "--dxf": "path", "--dxf-lines-arcs": "flag", "--svg": "path", "--follower-at": "num:deg", "--plot": "path",
-        "--csv": "path", "--cutter-radius": "num:mm"}},
+        "--csv": "path", "--cutter-radius": "num:mm", "--dynamics-plot": "path", "--dyn": "path", "--gcode": "path",
+        "--gcode-form": ["xy", "polar", "x"], "--feed": "num:mm/min"}},
     "kin": {"files": "mechanisms", "base": [], "options": {
         "--at": "num:deg", "--sweep": "range", "--driver": ["crank", "input", "x", "theta2"], "--outputs": ["x", "a,b"],
-        "--plot": "path", "--animate": "path"}},
+        "--plot": "path", "--animate": "path", "--equations": "flag"}},
+    "kin example": {"files": None, "base": ["--example"], "options": {"--equations": "flag", "--at": "num:deg"}},
     "dyn": {"files": "dynamics", "base": [], "options": {"--plot": "path", "--speed-plot": "path"}},
+    "synth": {"files": "synthesis", "base": [], "task": SYNTH_TASKS, "options": {
+        "--mechanism": "path", "-m": "path", "--drawing": "path", "--plot": "path", "--seed": "int",
+        "--evaluations": "int", "--restarts": "int"}},
+    "demo": {"files": None, "base": [], "options": {"--output": "dir", "-o": "dir"}, "common": False},
     "plugins": {"files": None, "base": [], "options": {}},
+    # The global options before the command word: --plugin FILE, --version, --help, help COMMAND.
+    "global": {"files": None, "base": [], "options": {}, "common": False},
 }
-WEIGHTS = {"gear": 3, "train": 4, "train synth": 2, "cam": 3, "kin": 3, "dyn": 3, "plugins": 0.2}
+WEIGHTS = {"gear": 2.5, "gear file": 1, "gear size": 1, "train": 3.5, "train synth": 1, "train synth planetary": 1,
+           "cam": 3, "kin": 2.5, "kin example": 0.5, "dyn": 3, "synth": 1.5, "demo": 0.15, "plugins": 0.2,
+           "global": 0.2}
 COMMON = {"--format": ["text", "json", "json", "csv", "md", "xml"], "--strict": "flag", "--output": "path"}
 
 
@@ -257,6 +308,24 @@ def option_value(rng, kind, scratch, input_path):
                            "100000", "100001", "0", "-3", "1e3", "2147483648", "x"])
     if kind == "plain":
         return random_number(rng)
+    if kind in ("pair", "triple", "list"):
+        count = {"pair": 2, "triple": 3}.get(kind, rng.randint(1, 6))
+        count += rng.choice([0, 0, 0, -1, 1])
+        return ",".join(random_number(rng) for _ in range(max(count, 0)))
+    if kind == "grades":
+        return ",".join(rng.choice(["1", "5", "6", "7", "11", "12", "0", "-1", "x", "7.5"])
+                        for _ in range(rng.choice([1, 1, 2, 3])))
+    if kind == "factor":
+        return f"{rng.choice(FACTORS)}={random_number(rng)}"
+    if kind == "chain":
+        return "chain:" + rng.choice(["0", "1", "2", "10", "100", "10000", "10001", "x", "-1", "1e3", ""])
+    if kind == "names":
+        return ",".join(rng.choice(TRAIN_MEMBERS) for _ in range(rng.randint(1, 4)))
+    if kind == "dir":
+        return rng.choice([os.path.join(scratch, "demo"), os.path.join(scratch, "existing.txt"),
+                           os.path.join(scratch, "nodir", "x", "y"), os.path.join(scratch, "link-to-input"),
+                           scratch, "-", "/dev/null", os.path.join(scratch, "demo-with-folder")]
+                          + ([""] if rng.random() < 0.2 else []))
     if kind.startswith("num:"):
         return typed_number(rng, kind[4:])
     if kind == "member":
@@ -278,7 +347,7 @@ def option_value(rng, kind, scratch, input_path):
     raise ValueError(kind)
 
 
-REPEATABLE = {"--fix", "--couple", "--input", "--torque", "--power"}
+REPEATABLE = {"--fix", "--couple", "--input", "--torque", "--power", "--factor"}
 
 
 def names_in(text):
@@ -295,9 +364,9 @@ def names_in(text):
 
 
 def random_options(rng, spec, scratch, input_path, names, given):
-    options = dict(spec["options"], **COMMON)
+    options = dict(spec["options"], **(COMMON if spec.get("common", True) else {}))
     args, used = [], set(given)
-    for _ in range(rng.choice([0, 1, 1, 2, 2, 3, 4])):
+    for _ in range(rng.choice([0, 1, 1, 2, 2, 3, 4]) if options else 0):
         name = rng.choice(list(options))
         if name in used and name not in REPEATABLE:
             continue
@@ -314,6 +383,8 @@ def random_options(rng, spec, scratch, input_path, names, given):
                 value = value.split("=")[0] + "=" + rng.choice(names)
         elif names and name in ("--driver", "--outputs") and rng.random() < 0.8:
             value = rng.choice(names)
+        elif names and kind == "names" and rng.random() < 0.8:
+            value = ",".join(rng.choice(names) for _ in range(rng.randint(1, 4)))
         args.append(value)
     if "--format" not in used and rng.random() < 0.5:
         args += ["--format", "json"]
@@ -349,18 +420,36 @@ def generate_case(rng):
     spec = COMMANDS[command]
     input_text = None
     args = list(spec["base"])
+    if command == "kin example":
+        args.append(option_value(rng, "chain", "{scratch}", None))
+    if command == "global":
+        for _ in range(rng.choice([0, 1, 1, 2])):
+            args += ["--plugin", rng.choice(["{scratch}/existing.txt", "/dev/null", "{scratch}/nodir/x.so", "{scratch}",
+                                             "libc.so.6", "gearkit-gear.so", "{scratch}/fifo.so", ""])]
+        args += rng.choice([["plugins"], ["gear", "--z1", "12", "--z2", "24", "--module", "3"], ["--version"],
+                            ["--help"], ["help"], ["help", "train"], ["help", "x"], ["frobnicate"], [], ["--x"]])
     if spec["files"]:
-        with open(rng.choice(example_files(spec["files"])), encoding="utf-8") as f:
+        path = rng.choice(example_files(spec["files"]))
+        with open(path, encoding="utf-8") as f:
             input_text = f.read()
         if rng.random() < 0.7:
             input_text = mutate_file(rng, input_text)
-        args = ["{input}"] + args
+        task = []
+        if "task" in spec:  # the subcommand the file is for, now and then another one
+            stem = os.path.splitext(os.path.basename(path))[0]
+            tasks = sorted(set(spec["task"].values())) + ["x"]
+            task = [spec["task"][stem] if rng.random() < 0.9 else rng.choice(tasks)]
+        args = task + ["{input}"] + args
     elif len(args) > 2 and rng.random() < 0.1:
         i = rng.randrange(len(args) // 2) * 2 + len(args) % 2  # an option and its value
         del args[i:i + 2]
     placeholder_scratch, placeholder_input = "{scratch}", ("{input}" if input_text is not None else None)
     args += random_options(rng, spec, placeholder_scratch, placeholder_input, names_in(input_text), set(args))
     return Case(command, args, input_text, folder=spec["files"])
+
+
+# The words on the command line of a fuzzer command that is not named as typed.
+COMMAND_WORDS = {"gear file": "gear", "kin example": "kin", "train synth planetary": "train synth", "global": ""}
 
 
 def prepare(case, scratch):
@@ -376,8 +465,10 @@ def prepare(case, scratch):
         os.symlink("model.yaml", os.path.join(scratch, "link-to-input"))
     with open(os.path.join(scratch, "existing.txt"), "w") as f:
         f.write("existing\n")
-    argv = case.command.split() + [a.replace("{input}", input_path or "").replace("{scratch}", scratch)
-                                   for a in case.args]
+    os.makedirs(os.path.join(scratch, "demo-with-folder", "cam.svg"), exist_ok=True)  # demo: a folder in the way
+    os.mkfifo(os.path.join(scratch, "fifo.so"))  # --plugin: must be refused without blocking
+    argv = COMMAND_WORDS.get(case.command, case.command).split() + [
+        a.replace("{input}", input_path or "").replace("{scratch}", scratch) for a in case.args]
     return argv, input_path
 
 
@@ -388,6 +479,9 @@ def limits(memory_mb):
             resource.setrlimit(resource.RLIMIT_AS, (memory_mb << 20, memory_mb << 20))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
     return apply
+
+
+STDOUT_CHECKED = 4 << 20  # bytes of a report parsed (a parsed JSON takes ten times its size here)
 
 
 def execute(exe, argv, scratch, stdout_to, timeout, memory_mb, env):
@@ -413,7 +507,12 @@ def execute(exe, argv, scratch, stdout_to, timeout, memory_mb, env):
                 break
             time.sleep(0.003)
     seconds = time.monotonic() - start
-    stdout = b"" if stdout_to else open(out_path, "rb").read()
+    # A report of millions of rows (kin --sweep allows 1e7 positions) is not read whole: the
+    # fuzzer's own size would count in the next child's peak RSS (a fork copies it before exec).
+    stdout = b""
+    if not stdout_to:
+        with open(out_path, "rb") as f:
+            stdout = f.read(STDOUT_CHECKED + 1)
     return status, stdout, open(err_path, "rb").read(), seconds, rss
 
 
@@ -467,6 +566,8 @@ def stderr_problem(status, lines):
 
 def report_problem(argv, stdout):
     """'json' or 'nonfinite' with a detail, or (None, None) for a sound report on stdout."""
+    if len(stdout) > STDOUT_CHECKED:
+        return None, None  # too long to parse here; the format tests check long reports
     text = stdout.decode("utf-8", "replace")
     fmt = argv[argv.index("--format") + 1] if "--format" in argv[:-1] else "text"
     to_stdout = all(a not in ("-", "/dev/stdout") for a in argv)
@@ -474,6 +575,12 @@ def report_problem(argv, stdout):
         if flag in argv[:-1] and argv[argv.index(flag) + 1] != "-":
             to_stdout = False
     if not to_stdout:
+        return None, None
+    if "--example" in argv:  # kin --example writes a mechanism file, whatever --format says
+        try:
+            yaml.safe_load(text)
+        except yaml.YAMLError as e:
+            return "json", f"--example wrote invalid YAML: {str(e)[:100]}"
         return None, None
     if fmt == "json":
         try:
@@ -585,7 +692,9 @@ def parse_arguments():
         o.env["UBSAN_OPTIONS"] = "exitcode=87:halt_on_error=1:print_stacktrace=1"
         o.env["LSAN_OPTIONS"] = "exitcode=23"
     else:
-        o.memory_mb, o.max_rss_mb = 4096, 1024
+        # docs/cli.md: every run stays under "a few hundred MB"; the largest documented limits
+        # (a kin sweep of 500,000 coordinate-positions, 4,000 drawn teeth) need about 250 MB.
+        o.memory_mb, o.max_rss_mb = 4096, 512
     return o
 
 

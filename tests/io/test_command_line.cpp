@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <sstream>
 
 using namespace gearkit::io;
@@ -113,4 +115,83 @@ TEST(CommandLine, AMissingPositionalArgumentIsNamedAsInTheUsage) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "expected the FILE argument, found none; usage: gearkit test FILE");
   }
+}
+
+TEST(CommandLine, PositionalArgumentsOfTheSharedHelper) {
+  const auto parse_two = [](std::vector<std::string> args, po::variables_map& vm) {
+    po::options_description desc("test");
+    po::positional_options_description pos;
+    add_positional_argument(desc, pos, "task", "TASK", "the task");
+    add_positional_argument(desc, pos, "file", "FILE", "the task file");
+    add_positional_argument(desc, pos, "extra", "EXTRA", "an optional one", false);
+    std::ostringstream out;
+    return parse_command_line(args, desc, pos, vm, "gearkit test TASK FILE [EXTRA]", out);
+  };
+  po::variables_map vm;
+  ASSERT_TRUE(parse_two({"path", "p.yaml"}, vm));
+  EXPECT_EQ(vm["task"].as<std::string>(), "path");
+  EXPECT_EQ(vm["file"].as<std::string>(), "p.yaml");
+  EXPECT_EQ(vm.count("extra"), 0u);
+  for (const auto& [args, message] :
+       {std::pair{std::vector<std::string>{}, "expected the TASK argument, found none; usage: gearkit test TASK FILE [EXTRA]"},
+        std::pair{std::vector<std::string>{"path"}, "expected the FILE argument, found none; usage: gearkit test TASK FILE [EXTRA]"}}) {
+    po::variables_map missing;
+    try {
+      parse_two(args, missing);
+      ADD_FAILURE() << message;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  }
+}
+
+TEST(CommandLine, AnOptionsOwnRangeIsCheckedBeforeTheGenericSizes) {
+  const auto run = [](std::vector<std::string> args) -> std::string {
+    po::options_description desc("test");
+    desc.add_options()("eta", number_in({0, 1, true, false, "an efficiency in (0, 1]"}), "efficiency")(
+        "k", number_in({-2, 2}), "a factor")("gap", po::value<std::string>(), "a length");
+    po::positional_options_description none;
+    po::variables_map vm;
+    std::ostringstream out;
+    try {
+      parse_command_line(args, desc, none, vm, "gearkit test", out);
+      const OptionRange range{0, 1, false, true, "a gap from 0 to 1 mm (not included)"};
+      const auto gap = quantity_option(vm, "gap", Quantity::length, "mm", range);
+      return gap ? fmt::format("{:g}", *gap) : "ok";
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  };
+  EXPECT_EQ(run({"--eta", "0.98", "--k", "-1.5"}), "ok");
+  EXPECT_EQ(run({"--eta", "0"}), "option '--eta': expected an efficiency in (0, 1], found 0");
+  EXPECT_EQ(run({"--eta", "1.5"}), "option '--eta': expected an efficiency in (0, 1], found 1.5");
+  // Inside (0, 1] but below the smallest size of any plain number (quantity.hpp, 1e-15): both said.
+  EXPECT_EQ(run({"--eta", "1e-300"}), "option '--eta': expected an efficiency in (0, 1] and at least 1e-15, found 1e-300");
+  EXPECT_EQ(run({"--k", "3"}), "option '--k': expected a value in [-2, 2], found 3");
+  EXPECT_EQ(run({"--k", "-1e-20"}), "option '--k': expected a value in [-2, 2] and of size 0 or at least 1e-15, found -1e-20");
+  EXPECT_EQ(run({"--gap", "0.5"}), "0.0005");  // SI
+  EXPECT_EQ(run({"--gap", "1 mm"}), "option '--gap': expected a gap from 0 to 1 mm (not included), found '1 mm'");
+  EXPECT_EQ(run({"--gap", "1e300"}), "option '--gap': expected a gap from 0 to 1 mm (not included), found '1e300'");
+  EXPECT_EQ(run({"--gap", "2 deg"}).rfind("option '--gap': expected a length", 0), 0u);
+}
+
+// Issue 11 item E: Boost.Program_options' own wording ("the argument ('x') for option '--eta' is
+// invalid", "cannot be specified more than once") reached the user; every option error now has
+// the documented form "option '--x': expected ..., found ...".
+TEST(CommandLine, BoostErrorsAreSaidInTheDocumentedForm) {
+  EXPECT_EQ(error_of({"a.yaml", "--eta", "x"}), "option '--eta': expected a number, found 'x'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "1e300"}), "option '--z1': expected a whole number, found '1e300'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "1.5"}), "option '--z1': expected a whole number, found '1.5'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "99999999999"}),
+            "option '--z1': expected a whole number from -2147483648 to 2147483647, found '99999999999'");
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "12", "--z1=13"}), "option '--z1': expected it once, found it 2 times");
+  EXPECT_EQ(error_of({"a.yaml", "--svg", "a.svg", "--svg", "b.svg", "--svg", "c.svg"}),
+            "option '--svg': expected it once, found it 3 times");
+  EXPECT_EQ(error_of({"a.yaml", "--frobnicate"}), "option '--frobnicate': expected an option listed by --help, found an unknown one");
+  EXPECT_EQ(error_of({"a.yaml", "--z1"}), "option '--z1': expected a value, found none");
+  EXPECT_EQ(error_of({"a.yaml", "--strict=yes"}), "option '--strict': expected no value (it is a switch), found one");
+  const std::string ambiguous = error_of({"a.yaml", "--s", "x"});
+  EXPECT_EQ(ambiguous.rfind("option '--s': expected a whole option name, found the beginning of ", 0), 0u) << ambiguous;
+  EXPECT_NE(ambiguous.find("'--svg'"), std::string::npos) << ambiguous;
+  EXPECT_NE(ambiguous.find("'--strict'"), std::string::npos) << ambiguous;
 }

@@ -99,12 +99,13 @@ TEST(Quantity, UnicodeSpellingsOfTheSeeds) {
 }
 
 TEST(Quantity, TypedBoostUnitsFrontEnds) {
-  EXPECT_DOUBLE_EQ(gearkit::io::parse_length("9").value(), 0.009);
-  EXPECT_DOUBLE_EQ(gearkit::io::parse_angle("180").value(), pi);
-  EXPECT_DOUBLE_EQ(gearkit::io::parse_angular_velocity("60").value(), 2 * pi);
-  EXPECT_DOUBLE_EQ(gearkit::io::parse_power("100 kW").value(), 1e5);
-  EXPECT_DOUBLE_EQ(gearkit::io::parse_torque("36.6").value(), 36.6);
-  EXPECT_DOUBLE_EQ(gearkit::io::parse_moment_of_inertia("0.1").value(), 0.1);
+  namespace io = gearkit::io;
+  EXPECT_DOUBLE_EQ(io::parse<io::Length>("9").value(), 0.009);
+  EXPECT_DOUBLE_EQ(io::parse<io::Angle>("180").value(), pi);
+  EXPECT_DOUBLE_EQ(io::parse<io::AngularVelocity>("60").value(), 2 * pi);
+  EXPECT_DOUBLE_EQ(io::parse<io::Power>("100 kW").value(), 1e5);
+  EXPECT_DOUBLE_EQ(io::parse<io::Torque>("36.6").value(), 36.6);
+  EXPECT_DOUBLE_EQ(io::parse<io::MomentOfInertia>("0.1").value(), 0.1);
 }
 
 // Each malformed input must be refused with a message that says what was wrong.

@@ -441,3 +441,46 @@ TEST(TrainCli, ModesOfAFreeTrainAreSaidOnceAndTheirNumberIsBounded) {
   EXPECT_EQ(many.status, 2);
   EXPECT_NE(many.err.find("option '--modes': expected at most 40 members"), std::string::npos) << many.err;
 }
+
+// A chain of `stages` 21:20 meshes (members m0..mN, each with gears of 20 and 21 teeth), the
+// train of issue 11 item A: exact speeds grow by 2.6 digits a stage, so the work grows with the
+// square of the stages. Line numbers: "members:" is line 1, member k line k + 2.
+std::string chain_of(int stages) {
+  std::string t = "members:\n";
+  for (int i = 0; i <= stages; ++i) t += "  - m" + std::to_string(i) + "\n";
+  t += "gears:\n";
+  for (int i = 0; i <= stages; ++i) {
+    t += "  - {name: a" + std::to_string(i) + ", member: m" + std::to_string(i) + ", z: 20}\n";
+    t += "  - {name: b" + std::to_string(i) + ", member: m" + std::to_string(i) + ", z: 21}\n";
+  }
+  t += "meshes:\n";
+  for (int i = 0; i < stages; ++i) t += "  - {gears: [b" + std::to_string(i) + ", a" + std::to_string(i + 1) + "]}\n";
+  return t + "analysis: {fix: [], input: m0 = 100 rpm, output: m" + std::to_string(stages) + "}\n";
+}
+
+TEST(TrainCli, TheEntriesOfATrainFileAreBounded) {
+  // At the limit (2,000 meshes) the chain is solved: each external mesh turns the next member
+  // at -21/20 of the speed of the one before (Willis), so w_m2 / w_m0 = (21/20)^2.
+  const CliRun at = gearkit("train " + write_yaml("chain2000.yaml", chain_of(2000)) + " --format json");
+  ASSERT_EQ(at.status, 0) << at.err;
+  const auto speeds = nlohmann::json::parse(at.out)["speeds_per_input"];
+  EXPECT_EQ(speeds["m1"], "-21/20");
+  EXPECT_EQ(speeds["m2"], "441/400");
+  // One mesh more: refused at the 2,001st mesh, line 1 + 2002 members + 1 + 4002 gears + 1 + 2001.
+  const CliRun over = gearkit("train " + write_yaml("chain2001.yaml", chain_of(2001)));
+  EXPECT_EQ(over.status, 2);
+  EXPECT_NE(over.err.find("chain2001.yaml:8010:5: 'meshes': expected at most 2000 entries"), std::string::npos)
+      << over.err;
+  // Members and gears are bounded before the meshes are read (the 20,000-stage chain of the issue
+  // took 26 s and 3.2 GB): the 4,001st member is refused.
+  const CliRun members = gearkit("train " + write_yaml("chain5000.yaml", chain_of(5000)));
+  EXPECT_EQ(members.status, 2);
+  EXPECT_NE(members.err.find("chain5000.yaml:4002:5: 'members': expected at most 4000 entries"), std::string::npos)
+      << members.err;
+  std::string gears = "members: [a, b]\ngears:\n";
+  for (int i = 0; i <= 8000; ++i) gears += "  - {name: g" + std::to_string(i) + ", member: a, z: 20}\n";
+  const CliRun too_many_gears = gearkit("train " + write_yaml("gears.yaml", gears + "meshes: []\n"));
+  EXPECT_EQ(too_many_gears.status, 2);
+  EXPECT_NE(too_many_gears.err.find("gears.yaml:8003:5: 'gears': expected at most 8000 entries"), std::string::npos)
+      << too_many_gears.err;
+}

@@ -41,7 +41,6 @@ class PiecewiseLinear {
   /// The same curve with x multiplied by k (k > 0): e.g. table angles from one shaft to another.
   PiecewiseLinear stretched(double k) const;
 
-  double min_value() const;
   double max_value() const;
 
   const std::vector<double>& x() const { return x_; }

@@ -2,10 +2,14 @@
 // Shared command-line handling for the built-in and plugin commands (Boost.Program_options):
 // the common options, --help, and option errors turned into InputError.
 #include <gearkit/io/output.hpp>
+#include <gearkit/io/quantity.hpp>
 #include <gearkit/io/report.hpp>
 #include <boost/program_options.hpp>
 #include <iosfwd>
+#include <limits>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gearkit::io {
@@ -20,8 +24,41 @@ struct CommonOptions {
   std::string table = {};  ///< --table NAME: the one table to write (report_output.hpp)
 };
 
+/// The values an option accepts when they are narrower than the generic sizes of quantity.hpp
+/// (magnitude_range), in the unit of the option's bare numbers. The shared parsing checks it
+/// before the generic sizes, so that a refusal states the option's own range ("expected a basic
+/// efficiency in (0, 1]"), never the generic one.
+struct OptionRange {
+  double low = -std::numeric_limits<double>::infinity();
+  double high = std::numeric_limits<double>::infinity();
+  bool low_open = false, high_open = false;
+  /// How a message says it ("a basic efficiency in (0, 1]"); empty: "a value in [low, high]".
+  std::string_view expected = {};
+
+  bool contains(double value) const;
+  std::string describe() const;
+};
+
+/// A number option (as po::value<double>) with its range: parse_command_line refuses a value
+/// outside it with "option '--x': expected <range>, found <value>".
+po::typed_value<double>* number_in(const OptionRange& range);
+
+/// The SI value of a quantity option given as text ("2 mm", "200 mm/min"), nullopt when it is not
+/// given. `name` without dashes; `default_unit` applies to a bare number and is the unit of
+/// `range`. @throws InputError naming the option for a malformed value, the wrong dimension, a
+/// value outside `range` (checked first) or outside magnitude_range.
+std::optional<double> quantity_option(const po::variables_map& vm, const char* name, Quantity q,
+                                      std::string_view default_unit, const std::optional<OptionRange>& range = {});
+
 /// Adds --help, --format, --output and --strict to `desc`.
 void add_common_options(po::options_description& desc);
+
+/// Adds a positional argument at the next position: `name` is its key in the variables map
+/// ("file") and, upper-cased, its name in messages. A required one missing from the command line
+/// is refused by parse_command_line with "expected the FILE argument, found none; usage: ...".
+/// @param value_name what --help shows for it ("FILE", "PAIR.yaml").
+void add_positional_argument(po::options_description& desc, po::positional_options_description& positional,
+                             const char* name, const char* value_name, const char* description, bool required = true);
 
 /// Parses `args` (the words after the command name). Returns false if --help was given, after
 /// printing "usage" and `desc` to `out`; the caller then returns 0.
@@ -29,6 +66,13 @@ void add_common_options(po::options_description& desc);
 bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
                         const po::positional_options_description& positional, po::variables_map& vm,
                         std::string_view usage, std::ostream& out);
+
+/// Boost.Program_options' error `e` from parsing `args` against `desc`, in the documented form
+/// "option '--x': expected ..., found ..." (docs/cli.md, "Messages and exit status"): a value of
+/// the wrong type, an option given twice, an unknown, ambiguous or misused option. Other errors
+/// keep Boost's wording, shortened to one line. parse_command_line uses it for every command.
+std::string option_error_message(const po::error& e, const po::options_description& desc,
+                                 const std::vector<std::string>& args);
 
 /// The common options from a parsed command line.
 CommonOptions common_options(const po::variables_map& vm);

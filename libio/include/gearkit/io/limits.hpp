@@ -32,6 +32,14 @@ inline constexpr int kSynthResults = 1000;
 /// gear --svg/--dxf: teeth drawn (z1 + z2 for --draw pair); about 50 kB per tooth.
 inline constexpr long long kDrawnTeeth = 4000;
 
+/// train: entries of a train file. Speeds and torques are exact fractions whose digits grow with
+/// every stage of a chain (a 20:21 stage adds 2.6, a 99999:100000 one 10), so the work and the
+/// report grow with the square of the stages: 2,000 stages of 99999:100000 with --torque take
+/// 1.6 s and 160 MB (docs/benchmarks.md); 20,000 would take minutes and gigabytes.
+inline constexpr std::size_t kTrainMeshes = 2000;
+inline constexpr std::size_t kTrainMembers = 4000;
+inline constexpr std::size_t kTrainGears = 8000;
+
 /// train --modes: members that are not planets, input or output (each is held in turn and each
 /// pair coupled: 820 modes at the limit).
 inline constexpr std::size_t kModesMembers = 40;

@@ -5,6 +5,7 @@
 // guarantees for users.
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,7 @@ inline constexpr std::string_view kTemporarySuffix = ".gearkit-tmp";
 /// (written directly). An empty path, a folder, a missing folder, a read-only file, a block
 /// device or socket, a file that is also an input (same device and inode, through links) and
 /// a destination named twice are refused when the output is added, before anything is written.
+/// So is "-" when the shell opened standard output on an input file (`1<>model.yaml`, `>>`).
 ///
 /// Regular files are first written in full to a temporary file in the destination's folder;
 /// commit() writes the standard-output and device outputs, then renames each temporary over
@@ -71,6 +73,8 @@ class OutputSet {
   void reserve(std::string_view option, const std::string& path);
   /// The content of the output reserved for `option`. @throws std::logic_error if none is.
   void fill(std::string_view option, std::string_view content);
+  /// The option of the output that goes to standard output ("-"), if one does.
+  std::optional<std::string> standard_output_option() const;
 
   /// Puts every output in place; afterwards the set is empty.
   /// @throws InputError when a write fails (disk full, device error); regular-file outputs are

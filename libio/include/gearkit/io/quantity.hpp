@@ -67,11 +67,17 @@ MagnitudeRange magnitude_range(Quantity q);
 ///         magnitude_range(expected).
 double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit);
 
+/// As parse_quantity_si but without the check against magnitude_range (the value is still finite),
+/// for a caller that checks a narrower range of its own first (io::quantity_option), so that the
+/// message states that range. Anything else should call parse_quantity_si.
+double parse_quantity_si_any_size(std::string_view text, Quantity expected, std::string_view default_unit);
+
 /// The SI factor of a unit expression such as "mm", "rpm" or "kg*m^2", checked against
 /// `expected`. @throws QuantityError as parse_quantity_si.
 double unit_factor_si(std::string_view unit, Quantity expected);
 
-// Typed front ends on Boost.Units for code that wants dimensional safety at compile time.
+// Typed front end on Boost.Units for code that wants dimensional safety at compile time:
+// parse<Length>("9") is 0.009 m. Each type names its Quantity and the default unit of a bare number.
 namespace si = boost::units::si;
 using Length = boost::units::quantity<si::length>;
 using Angle = boost::units::quantity<si::plane_angle>;
@@ -79,18 +85,27 @@ using AngularVelocity = boost::units::quantity<si::angular_velocity>;
 using Power = boost::units::quantity<si::power>;
 using Torque = boost::units::quantity<si::torque>;
 using MomentOfInertia = boost::units::quantity<si::moment_of_inertia>;
-using Mass = boost::units::quantity<si::mass>;
-using Force = boost::units::quantity<si::force>;
-using Time = boost::units::quantity<si::time>;
 
-Length parse_length(std::string_view text, std::string_view default_unit = "mm");
-Angle parse_angle(std::string_view text, std::string_view default_unit = "deg");
-AngularVelocity parse_angular_velocity(std::string_view text, std::string_view default_unit = "rpm");
-Power parse_power(std::string_view text, std::string_view default_unit = "W");
-Torque parse_torque(std::string_view text, std::string_view default_unit = "N*m");
-MomentOfInertia parse_moment_of_inertia(std::string_view text, std::string_view default_unit = "kg*m^2");
-Mass parse_mass(std::string_view text, std::string_view default_unit = "kg");
-Force parse_force(std::string_view text, std::string_view default_unit = "N");
-Time parse_time(std::string_view text, std::string_view default_unit = "s");
+template <class T>
+struct QuantityTraits;  // kind: the Quantity of T; unit: the default unit of a bare number
+#define GEARKIT_QUANTITY_TRAITS(Type, Kind, Unit)           \
+  template <>                                             \
+  struct QuantityTraits<Type> {                           \
+    static constexpr Quantity kind = Quantity::Kind;      \
+    static constexpr std::string_view unit = Unit;        \
+  };
+GEARKIT_QUANTITY_TRAITS(Length, length, "mm")
+GEARKIT_QUANTITY_TRAITS(Angle, angle, "deg")
+GEARKIT_QUANTITY_TRAITS(AngularVelocity, angular_velocity, "rpm")
+GEARKIT_QUANTITY_TRAITS(Power, power, "W")
+GEARKIT_QUANTITY_TRAITS(Torque, torque, "N*m")
+GEARKIT_QUANTITY_TRAITS(MomentOfInertia, moment_of_inertia, "kg*m^2")
+#undef GEARKIT_QUANTITY_TRAITS
+
+/// `text` as a Boost.Units quantity T (Length, Angle, ...). @throws QuantityError as parse_quantity_si.
+template <class T>
+T parse(std::string_view text, std::string_view default_unit = QuantityTraits<T>::unit) {
+  return T::from_value(parse_quantity_si(text, QuantityTraits<T>::kind, default_unit));
+}
 
 }  // namespace gearkit::io

@@ -41,7 +41,6 @@ class EchelonSystem {
   std::size_t unknowns() const { return unknowns_; }
   std::size_t parameters() const { return parameters_; }
   std::size_t rank() const { return pivots_.size(); }
-  bool is_pivot(std::size_t column) const { return order_of_column_.at(column) >= 0; }
   /// Unknowns that no row determines, ascending.
   std::vector<std::size_t> free_unknowns() const;
 
