@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <ostream>
 #include <sstream>
 
@@ -227,6 +228,22 @@ void warn_non_finite(Report& report) {
                                           "the inputs put it out of range", names[i]));
   if (names.size() > kShown)
     report.warnings.push_back(fmt::format("non-finite result: {} more quantities are not finite", names.size() - kShown));
+}
+
+nlohmann::json json_number(double value) {
+  if (!std::isfinite(value)) return nullptr;
+  if (value == 0) return 0.0;
+  return std::strtod(fmt::format("{:.12g}", value).c_str(), nullptr);
+}
+
+void round_json_numbers(nlohmann::json& tree) {
+  if (tree.is_number_float()) {
+    const double v = tree.get<double>();
+    if (std::isfinite(v)) tree = json_number(v);
+    return;
+  }
+  if (tree.is_structured())
+    for (auto& child : tree) round_json_numbers(child);
 }
 
 std::string fixed(double value, int digits) {

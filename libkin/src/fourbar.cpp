@@ -19,12 +19,13 @@ GrashofResult grashof(double ground, double crank, double coupler, double rocker
   const double tolerance = 1e-9 * (s + l + pq);
   if (std::abs(s + l - pq) <= tolerance) {
     r.kind = GrashofClass::change_point;
-    r.text = fmt::format("change point (s + l = p + q = {:.6g} m): the linkage can flatten and switch branch", pq);
+    r.text = fmt::format("change point (s + l = p + q = {:.6g} mm): the linkage can flatten and switch branch", pq * 1000);
     return r;
   }
   if (s + l > pq) {
     r.kind = GrashofClass::triple_rocker;
-    r.text = fmt::format("non-Grashof triple rocker (s + l = {:.6g} m > p + q = {:.6g} m): no link turns fully", s + l, pq);
+    r.text = fmt::format("non-Grashof triple rocker (s + l = {:.6g} mm > p + q = {:.6g} mm): no link turns fully",
+                         (s + l) * 1000, pq * 1000);
     return r;
   }
   if (shortest == 0) {
@@ -38,7 +39,7 @@ GrashofResult grashof(double ground, double crank, double coupler, double rocker
     r.text = shortest == 1 ? "Grashof crank-rocker (the input crank turns fully)"
                            : "Grashof rocker-crank (the output link turns fully)";
   }
-  r.text += fmt::format(" (s + l = {:.6g} m < p + q = {:.6g} m)", s + l, pq);
+  r.text += fmt::format(" (s + l = {:.6g} mm < p + q = {:.6g} mm)", (s + l) * 1000, pq * 1000);
   return r;
 }
 

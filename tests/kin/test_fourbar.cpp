@@ -19,6 +19,9 @@ TEST(Grashof, Classes) {
   EXPECT_EQ(grashof(0.10, 0.05, 0.10, 0.05).kind, GrashofClass::change_point);
   EXPECT_EQ(grashof(0.12, 0.08, 0.09, 0.10).kind, GrashofClass::triple_rocker);
   EXPECT_NE(grashof(0.10, 0.04, 0.12, 0.08).text.find("crank-rocker"), std::string::npos);
+  // In mm, as every report: s + l = 40 + 120 mm, p + q = 100 + 80 mm.
+  EXPECT_NE(grashof(0.10, 0.04, 0.12, 0.08).text.find("(s + l = 160 mm < p + q = 180 mm)"), std::string::npos)
+      << grashof(0.10, 0.04, 0.12, 0.08).text;
 }
 
 // Transmission angle by the law of cosines on triangle A B O4 (diagonal z = |A O4|):

@@ -17,7 +17,9 @@ enum class GrashofClass {
 struct GrashofResult {
   GrashofClass kind = GrashofClass::triple_rocker;
   double s = 0.0, l = 0.0, pq = 0.0;  ///< shortest, longest, sum of the other two [m]
-  std::string text;                   ///< e.g. "Grashof crank-rocker (s + l = 0.45 m < p + q = 0.5 m)"
+  /// For reports, lengths in mm as in mechanism files and every report: e.g. "Grashof
+  /// crank-rocker (the input crank turns fully) (s + l = 450 mm < p + q = 500 mm)".
+  std::string text;
 };
 
 /// Grashof class from the link lengths [m] (ground, input crank, coupler, output rocker).
