@@ -49,7 +49,7 @@ TEST(CamCommand, Otm2015Problem2Report) {
   EXPECT_EQ(j["profile_points"].size(), 360u);
   // The exam's motion climbs 57.3 deg in 60 deg of cam: with any reasonable arm the pressure
   // angle exceeds the 45 deg limit, and the report says so.
-  EXPECT_GT(j["pressure_angle_max_deg"].get<double>(), 45);
+  EXPECT_GT(std::abs(j["pressure_angle_max_deg"].get<double>()), 45);  // signed: the largest is on the return
   ASSERT_FALSE(j["warnings"].empty());
   EXPECT_NE(j["warnings"][0].get<std::string>().find("pressure angle"), std::string::npos);
 }
@@ -333,13 +333,39 @@ TEST(CamCommand, JsonNumbersCarryNoConversionNoise) {
 }
 
 TEST(CamCommand, PivotInsideTheCamsSweepIsAWarning) {
-  // Issue 18: the OTM example's cam reaches 134.3 mm and sweeps through its own pivot at 120 mm.
-  const auto j = run_json(quoted(example("otm2015_p2_oscillating_cycloidal.yaml")));
+  // Issue 18: the OTM example's first dimensions (pivot 120, arm 100, base 40 mm) made a cam that
+  // reaches 134.3 mm and sweeps through its own pivot at 120 mm: a warning.
+  std::string yaml;
+  {
+    std::ifstream in(example("otm2015_p2_oscillating_cycloidal.yaml"));
+    yaml.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (auto [from, to] : {std::pair{"base_radius: 75 mm", "base_radius: 40 mm"}, {"pivot_distance: 170 mm", "pivot_distance: 120 mm"},
+                          {"arm_length: 90 mm", "arm_length: 100 mm"}, {"  pivot_radius: 10 mm\n", ""}}) {
+    ASSERT_NE(yaml.find(from), std::string::npos) << from;
+    yaml.replace(yaml.find(from), std::string(from).size(), to);
+  }
+  const auto j = run_json(quoted(write_model("otm_clash.yaml", yaml)));
   EXPECT_NEAR(j["radius_max_mm"].get<double>(), 134.3, 0.05);
   EXPECT_LT(j["pivot_clearance_mm"].get<double>(), 0);
   bool warned = false;
   for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().find("strike the pivot") != std::string::npos;
   EXPECT_TRUE(warned);
+}
+
+TEST(CamCommand, ShippedOtmExampleClearsItsPivot) {
+  // Issue 18: a shipped example must not clash. Its dimensions (chosen, not in the seed): pivot
+  // a = 170, arm L = 90, roller 10, base 75 mm (prime radius 85), boss 10 mm. Law of cosines:
+  // cos(gamma_0) = (a^2 + L^2 - 85^2) / (2 a L); at the top dwell (psi = 1 rad) the roller centre
+  // is at R^2 = a^2 + L^2 - 2 a L cos(gamma_0 + 1) from the cam centre, and the cam's largest
+  // radius is R - 10 mm there (the dwell's profile is a circle about the centre).
+  const double a = 170, L = 90, gamma0 = std::acos((a * a + L * L - 85.0 * 85) / (2 * a * L));
+  const double reach = std::sqrt(a * a + L * L - 2 * a * L * std::cos(gamma0 + 1)) - 10;
+  const auto j = run_json(quoted(example("otm2015_p2_oscillating_cycloidal.yaml")));
+  EXPECT_NEAR(j["radius_max_mm"].get<double>(), reach, 1e-6);
+  EXPECT_NEAR(j["pivot_clearance_mm"].get<double>(), a - 10 - reach, 1e-6);
+  EXPECT_GT(j["pivot_clearance_mm"].get<double>(), 5);
+  for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("pivot"), std::string::npos) << w;
 }
 
 TEST(CamCommand, PolynomialAndBsplineSegmentsFromTheModelFile) {
