@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -98,6 +99,21 @@ void biarc_error(const std::function<CurvePoint(double)>& curve, double ta, doub
       std::fill(errors.begin(), errors.end(), INFINITY);
       return;
     }
+  // The curve at the sampling points of find_maximum (the same abscissae, computed alike), shared
+  // by every offset: only the golden-section steps differ between offsets.
+  constexpr int kSamples = 8;
+  const double h = (tb - ta) / kSamples;
+  std::array<double, kSamples + 1> at;
+  std::array<CurvePoint, kSamples + 1> sampled;
+  for (int i = 0; i <= kSamples; ++i) {
+    at[i] = i == kSamples ? tb : ta + h * i;
+    sampled[i] = one_sided(curve, at[i], ta, tb, ka, kb);
+  }
+  auto point = [&](double t) {
+    for (int i = 0; i <= kSamples; ++i)
+      if (at[i] == t) return sampled[i];
+    return one_sided(curve, t, ta, tb, ka, kb);
+  };
   for (std::size_t k = 0; k < offsets.size(); ++k) {
     const double d = offsets[k];
     std::vector<Piece> moved;
@@ -108,14 +124,14 @@ void biarc_error(const std::function<CurvePoint(double)>& curve, double ta, doub
       continue;
     }
     auto distance = [&](double t) {
-      const CurvePoint p = one_sided(curve, t, ta, tb, ka, kb);
+      const CurvePoint p = point(t);
       const double len = std::hypot(p.tx, p.ty);
       const double x = p.x - d * p.ty / len, y = p.y + d * p.tx / len;
       double best = INFINITY;
       for (const Piece& piece : moved) best = std::min(best, distance_to_piece(piece, x, y));
       return best;
     };
-    errors[k] = detail::find_maximum(distance, ta, tb, 8, 1e-4 * (tb - ta)).value;
+    errors[k] = detail::find_maximum(distance, ta, tb, kSamples, 1e-4 * (tb - ta)).value;
   }
 }
 

@@ -216,6 +216,42 @@ TEST(ArcSpline, CornersAreFittedAsCornersAndOffsetExactly) {
   EXPECT_NEAR(top, h5, 1e-9);
 }
 
+// A peanut: (40 cos t, sin t (8 + 20 cos^2 t)), two lobes joined by a neck of half-width 8 at
+// x = 0 whose flanks are concave (y = 8 + x^2 / 100 near it: radius 50); its sharpest convex
+// radius is 28^2 / 40 = 19.6 mm at the lobes' ends.
+CurvePoint peanut(double t) {
+  const double c = std::cos(t), s = std::sin(t);
+  return {40 * c, s * (8 + 20 * c * c), -40 * s, c * (8 + 20 * c * c) - 40 * s * s * c};
+}
+
+TEST(ArcSpline, OffsetThatCrossesItselfWithoutFoldingIsTrimmed) {
+  // No arc turns inside out at 10 mm (every radius > 10 mm), yet the neck is only 16 mm wide: the
+  // raw inset's two flanks cross there and the inset is two lobes. At 5 mm it is one loop, the
+  // analytic normal offset X(t) - 5 n(t).
+  const auto spline = fit_biarcs(peanut, uniform_breaks(36), {1e-5, 24, {}, {}}, true);
+  const OffsetCurve narrow = offset_closed_spline(spline, 10);
+  EXPECT_TRUE(narrow.trimmed);
+  ASSERT_EQ(narrow.loops.size(), 2u);
+  const auto own = pieces_of(spline);
+  for (const auto& loop : narrow.loops)
+    for (const Piece& p : loop) {
+      double best = INFINITY;
+      for (const Piece& q : own) best = std::min(best, distance_to_piece(q, p.x0, p.y0));
+      EXPECT_NEAR(best, 10, 1e-4);
+      EXPECT_GT(std::abs(p.x0), 1);  // nothing left in the neck
+    }
+  const OffsetCurve wide = offset_closed_spline(spline, 5);
+  EXPECT_FALSE(wide.trimmed);
+  ASSERT_EQ(wide.loops.size(), 1u);
+  std::vector<std::pair<double, double>> analytic;
+  for (int i = 0; i < 3600; ++i) {
+    const CurvePoint p = peanut(2 * pi * i / 3600);
+    const double n = std::hypot(p.tx, p.ty);
+    analytic.push_back({p.x - 5 * p.ty / n, p.y + 5 * p.tx / n});
+  }
+  EXPECT_LE(max_distance(wide.loops[0], analytic), 1e-5 * 1.01);
+}
+
 TEST(ArcSpline, MergeJoinsArcsOnOneCircleOnly) {
   const Piece a{10, 0, 0, 10, 0, 0, 10, pi / 2};
   const Piece b{0, 10, -10, 0, 0, 0, 10, pi / 2};
