@@ -6,21 +6,16 @@
 #include <gearkit/synth/motion_generation.hpp>
 #include <gearkit/synth/path_generation.hpp>
 
+#include "spawn_process.hpp"
 #include "synth_test_support.hpp"
 
 #include <benchmark/benchmark.h>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
-
-extern char** environ;
 
 namespace gs = gearkit::synth;
 
@@ -91,24 +86,13 @@ BENCHMARK(BM_Path_TenPointEllipse)->Unit(benchmark::kMillisecond)->Iterations(1)
 // the children (ru_maxrss of RUSAGE_CHILDREN: the largest child so far).
 void BM_Process_SynthPath(benchmark::State& state) {
   const std::string file = std::string(GEARKIT_SOURCE_DIR) + "/examples/synthesis/path_ellipse.yaml";
-  std::vector<std::string> words{GEARKIT_EXE, "synth", "path", file};
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
+  long max_rss_kb = 0;
   for (auto _ : state) {
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    pid_t pid = 0;
-    if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) state.SkipWithError("cannot start gearkit");
-    posix_spawn_file_actions_destroy(&actions);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) state.SkipWithError("gearkit synth failed");
+    const gearkit::bench::ProcessRun run = gearkit::bench::run_process({GEARKIT_EXE, "synth", "path", file});
+    if (!run.ok) state.SkipWithError("gearkit synth failed");
+    max_rss_kb = std::max(max_rss_kb, run.max_rss_kb);
   }
-  rusage usage{};
-  getrusage(RUSAGE_CHILDREN, &usage);
-  state.counters["max_rss_MB"] = static_cast<double>(usage.ru_maxrss) / 1024;
+  state.counters["max_rss_MB"] = static_cast<double>(max_rss_kb) / 1024;
 }
 BENCHMARK(BM_Process_SynthPath)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1)->Repetitions(3);
 

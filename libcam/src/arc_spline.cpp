@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -45,7 +46,7 @@ namespace {
 
 /// The two pieces of a biarc (see add_biarc in offset_cgal.cpp for the equations), in doubles.
 void biarc_pieces(const Knot& a, const Knot& b, const Direction& joint, std::vector<Piece>& out) {
-  const double t0x = a.tangent.x(), t0y = a.tangent.y(), t1x = b.tangent.x(), t1y = b.tangent.y();
+  const double t0x = a.tangent.x(), t0y = a.tangent.y(), t1x = incoming(b).x(), t1y = incoming(b).y();
   const double wx = joint.x(), wy = joint.y();
   const double rx = b.y - a.y, ry = -(b.x - a.x);
   const double ux = t0x - wx, uy = t0y - wy, vx = wx - t1x, vy = wy - t1y;
@@ -65,7 +66,7 @@ void biarc_pieces(const Knot& a, const Knot& b, const Direction& joint, std::vec
 
 Knot knot_at(const std::function<CurvePoint(double)>& curve, double t) {
   const CurvePoint p = curve(t);
-  return {p.x, p.y, Direction::from_angle(std::atan2(p.ty, p.tx))};
+  return {p.x, p.y, Direction::from_angle(std::atan2(p.ty, p.tx)), false, {}};
 }
 
 /// The joint tangent that makes the biarc a single arc when the data lie on a circle:
@@ -73,21 +74,46 @@ Knot knot_at(const std::function<CurvePoint(double)>& curve, double t) {
 Direction joint_for(const Knot& a, const Knot& b) {
   const double chord = std::atan2(b.y - a.y, b.x - a.x);
   const double a0 = a.tangent.angle();
-  const double a1 = a0 + wrap_pi(b.tangent.angle() - a0);
+  const double a1 = a0 + wrap_pi(incoming(b).angle() - a0);
   return Direction::from_angle(2 * chord - 0.5 * (a0 + a1));
+}
+
+/// At a corner knot the curve's own value at the knot may be the other side's: there the
+/// biarc's side is the knot's tangent.
+CurvePoint one_sided(const std::function<CurvePoint(double)>& curve, double t, double ta, double tb, const Knot& ka,
+                     const Knot& kb) {
+  CurvePoint p = curve(t);
+  const Direction* side = t == ta && ka.corner ? &ka.tangent : t == tb && kb.corner ? &kb.tangent_in : nullptr;
+  if (side) p.tx = side->x(), p.ty = side->y();
+  return p;
 }
 
 /// Largest distance, over the biarc's parameter interval and every offset d, from the offset
 /// curve point p(t) + d n(t) to the nearer of the two offset arcs. Found by maximisation (see
 /// extremum.hpp): the error of a biarc is a smooth function with a few humps, so eight samples
 /// bracket its maxima and golden-section search pins each to 1e-4 of the interval.
-void biarc_error(const std::function<CurvePoint(double)>& curve, double ta, double tb,
+void biarc_error(const std::function<CurvePoint(double)>& curve, double ta, double tb, const Knot& ka, const Knot& kb,
                  const std::vector<Piece>& pieces, const std::vector<double>& offsets, std::vector<double>& errors) {
   for (const Piece& piece : pieces)  // a biarc that loops is wrong even if it passes near the curve
     if (std::abs(piece.sweep) > pi / 2) {
       std::fill(errors.begin(), errors.end(), INFINITY);
       return;
     }
+  // The curve at the sampling points of find_maximum (the same abscissae, computed alike), shared
+  // by every offset: only the golden-section steps differ between offsets.
+  constexpr int kSamples = 8;
+  const double h = (tb - ta) / kSamples;
+  std::array<double, kSamples + 1> at;
+  std::array<CurvePoint, kSamples + 1> sampled;
+  for (int i = 0; i <= kSamples; ++i) {
+    at[i] = i == kSamples ? tb : ta + h * i;
+    sampled[i] = one_sided(curve, at[i], ta, tb, ka, kb);
+  }
+  auto point = [&](double t) {
+    for (int i = 0; i <= kSamples; ++i)
+      if (at[i] == t) return sampled[i];
+    return one_sided(curve, t, ta, tb, ka, kb);
+  };
   for (std::size_t k = 0; k < offsets.size(); ++k) {
     const double d = offsets[k];
     std::vector<Piece> moved;
@@ -98,14 +124,14 @@ void biarc_error(const std::function<CurvePoint(double)>& curve, double ta, doub
       continue;
     }
     auto distance = [&](double t) {
-      const CurvePoint p = curve(t);
+      const CurvePoint p = point(t);
       const double len = std::hypot(p.tx, p.ty);
       const double x = p.x - d * p.ty / len, y = p.y + d * p.tx / len;
       double best = INFINITY;
       for (const Piece& piece : moved) best = std::min(best, distance_to_piece(piece, x, y));
       return best;
     };
-    errors[k] = detail::find_maximum(distance, ta, tb, 8, 1e-4 * (tb - ta)).value;
+    errors[k] = detail::find_maximum(distance, ta, tb, kSamples, 1e-4 * (tb - ta)).value;
   }
 }
 
@@ -121,7 +147,7 @@ void fit_interval(FitState& st, double ta, double tb, const Knot& ka, const Knot
   const Direction joint = joint_for(ka, kb);
   std::vector<Piece> pieces;
   biarc_pieces(ka, kb, joint, pieces);
-  biarc_error(st.curve, ta, tb, pieces, st.offsets, st.errors);
+  biarc_error(st.curve, ta, tb, ka, kb, pieces, st.offsets, st.errors);
   if (*std::max_element(st.errors.begin(), st.errors.end()) <= st.options.tolerance) {
     st.out.joints.push_back(joint);
     st.out.knots.push_back(kb);
@@ -142,12 +168,30 @@ void fit_interval(FitState& st, double ta, double tb, const Knot& ka, const Knot
 
 }  // namespace
 
+namespace {
+
+/// The knot at break t: a corner (both tangents) if the options list one there.
+Knot break_knot(const std::function<CurvePoint(double)>& curve, double t, const FitOptions& options, double same) {
+  Knot k = knot_at(curve, t);
+  for (const CurveCorner& c : options.corners) {
+    if (std::abs(c.t - t) > same) continue;
+    k.corner = true;
+    k.tangent = Direction::from_angle(std::atan2(c.out_y, c.out_x));
+    k.tangent_in = Direction::from_angle(std::atan2(c.in_y, c.in_x));
+  }
+  return k;
+}
+
+}  // namespace
+
 BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vector<double> breaks,
                        const FitOptions& options, bool closed) {
+  for (const CurveCorner& c : options.corners) breaks.push_back(c.t);
   std::sort(breaks.begin(), breaks.end());
   // Breaks that differ by rounding only would make a biarc with no length and a random chord.
   const double span = breaks.empty() ? 0 : breaks.back() - breaks.front();
-  breaks.erase(std::unique(breaks.begin(), breaks.end(), [&](double a, double b) { return b - a <= 1e-9 * span; }),
+  const double same = 1e-9 * span;
+  breaks.erase(std::unique(breaks.begin(), breaks.end(), [&](double a, double b) { return b - a <= same; }),
                breaks.end());
   if (breaks.size() < 2) throw GeometryError("fit_biarcs: the parameter range is empty");
   BiarcSpline spline;
@@ -155,11 +199,16 @@ BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vect
   state.offsets.insert(state.offsets.end(), options.offsets.begin(), options.offsets.end());
   state.errors.assign(state.offsets.size(), 0);
   spline.max_error.assign(state.offsets.size(), 0);
-  const Knot first = knot_at(curve, breaks.front());
+  Knot first = break_knot(curve, breaks.front(), options, same);
+  const Knot end = break_knot(curve, breaks.back(), options, same);
+  if (closed && end.corner) {  // a corner at the closing point may be given at either end
+    if (!first.corner) first.tangent = end.tangent;
+    first.corner = true, first.tangent_in = end.tangent_in;
+  }
   spline.knots.push_back(first);
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
     const bool last = i + 2 == breaks.size();
-    const Knot kb = closed && last ? first : knot_at(curve, breaks[i + 1]);
+    const Knot kb = !last ? break_knot(curve, breaks[i + 1], options, same) : closed ? first : end;
     fit_interval(state, breaks[i], breaks[i + 1], spline.knots.back(), kb, 0);
   }
   return spline;

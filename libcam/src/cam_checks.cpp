@@ -76,6 +76,42 @@ void refine_extremes(const CamDesign& d, double h, CamChecks& r) {
   }
 }
 
+/// The profile's radius of curvature where it is convex towards the follower [mm]; <= 0 where
+/// it folds (undercut), +infinity where it is concave or straight.
+double rho_of(const CamDesign& d, const ContactState& c) {
+  if (d.follower.contact == Contact::flat_face) return c.envelope_regular ? 1 / c.curvature_profile : -INFINITY;
+  const double k = wall_sign(d) * c.curvature_pitch;
+  return k > 0 ? 1 / k - roller_radius(d) : INFINITY;
+}
+
+/// Undercuts narrower than the sampling: at every sampled local minimum of rho that is still
+/// positive, the minimum between the neighbouring samples is found (golden-section search); if
+/// it is <= 0 the fold's ends are found by bisection towards the samples either side (rho > 0).
+void undercuts_between_samples(const CamDesign& d, double h, CamChecks& r) {
+  auto rho = [&](double theta) { return rho_of(d, contact_at(d, theta)); };
+  const std::size_t n = r.samples.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double prev = rho_of(d, r.samples[(i + n - 1) % n]), cur = rho_of(d, r.samples[i]),
+                 next = rho_of(d, r.samples[(i + 1) % n]);
+    if (!(cur > 0 && std::isfinite(cur) && cur <= prev && cur <= next && (cur < prev || cur < next))) continue;
+    const double at = r.samples[i].theta;
+    const detail::Peak low = detail::golden_maximum([&](double t) { return -rho(t); }, at - h, at + h, 1e-12, {at, -cur});
+    if (low.value < 0) continue;
+    auto edge = [&](double outside) {
+      double in = low.x, out = outside;
+      for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (in + out);
+        (rho(mid) <= 0 ? in : out) = mid;
+      }
+      return in;
+    };
+    r.undercut = true;
+    r.undercut_ranges.push_back({edge(at + h), edge(at - h)});  // {end (value), start (theta)}
+  }
+  std::sort(r.undercut_ranges.begin(), r.undercut_ranges.end(),
+            [](const ValueAt& a, const ValueAt& b) { return a.theta < b.theta; });
+}
+
 }  // namespace
 
 CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
@@ -113,7 +149,9 @@ CamChecks check_design(const CamDesign& d, const CheckOptions& options) {
   }
   if (d.follower.contact != Contact::flat_face) r.face_min = r.face_max = 0;
   refine_extremes(d, two_pi / n, r);
+  undercuts_between_samples(d, two_pi / n, r);
   r.radius_max = largest_radius(d);
+  r.corners = pitch_corners(d);
   r.pressure_angle_exceeded = std::abs(r.pressure_angle_max.value) > options.pressure_angle_limit;
   r.base_radius_min = NAN;  // the groove's outer wall and the conjugate cam follow from the first cam
   if (d.follower.surface != Surface::cam) return r;

@@ -277,15 +277,33 @@ CamDesign conjugate_cam_of(const CamDesign& design) {
   return d;
 }
 
-ContactState contact_at(const CamDesign& design, double theta) {
+ContactState contact_at(const CamDesign& design, double theta) { return contact_at(design, theta, design.program.at(theta)); }
+
+ContactState contact_at(const CamDesign& design, double theta, const Motion& motion) {
   ContactState c;
   c.theta = theta;
-  c.motion = design.program.at(theta);
+  c.motion = motion;
   if (design.follower.contact == Contact::flat_face)
     flat_follower(design, c);
   else
     pitch_follower(design, c);
   return c;
+}
+
+std::vector<PitchCorner> pitch_corners(const CamDesign& design) {
+  std::vector<PitchCorner> out;
+  if (design.follower.contact == Contact::flat_face) return out;
+  const double sigma = rotation_sign(design.rotation);
+  auto unit = [](Vec2 v) { return (1 / norm(v)) * v; };
+  for (const MotionProgram::Break& b : velocity_jumps(design.program)) {
+    const auto [before, after] = design.program.limits_at(b);
+    const ContactState c0 = contact_at(design, b.theta, before), c1 = contact_at(design, b.theta, after);
+    PitchCorner k{b.theta, c0.pitch, unit(c0.pitch_tangent), unit(c1.pitch_tangent), 0};
+    // The pitch curve runs clockwise for a counter-clockwise cam: turning clockwise is convex.
+    k.turn = -sigma * std::atan2(cross(k.before, k.after), dot(k.before, k.after));
+    out.push_back(k);
+  }
+  return out;
 }
 
 }  // namespace gearkit::cam

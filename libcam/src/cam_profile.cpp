@@ -1,5 +1,7 @@
 #include <gearkit/cam/cam_profile.hpp>
 
+#include "extremum.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -20,6 +22,10 @@ struct CounterClockwiseCurve {
   double theta_of(double t) const {
     const double t0 = design.program.start();
     return sigma < 0 ? t0 + t : t0 + two_pi - t;
+  }
+  double t_of(double theta) const {
+    const double rel = theta - design.program.start();
+    return std::clamp(sigma < 0 ? rel : two_pi - rel, 0.0, two_pi);
   }
   CurvePoint operator()(double t) const {
     const ContactState c = contact_at(design, theta_of(t));
@@ -43,14 +49,54 @@ std::vector<double> breaks_of(const CamDesign& d, double sigma) {
   return breaks;
 }
 
-std::vector<Piece> polyline_of(const CamDesign& d, int samples, double sigma) {
+/// The pitch curve's corners in the curve's parameter: t runs against theta for a
+/// counter-clockwise cam, so there the curve arrives with the reversed tangent after the corner.
+std::vector<CurveCorner> corners_of(const CamDesign& d, const CounterClockwiseCurve& curve) {
+  std::vector<CurveCorner> out;
+  for (const PitchCorner& c : pitch_corners(d)) {
+    const bool along = curve.sigma < 0;
+    const Vec2 in = along ? c.before : Vec2{-c.after.x, -c.after.y};
+    const Vec2 out_t = along ? c.after : Vec2{-c.before.x, -c.before.y};
+    out.push_back({curve.t_of(c.theta), in.x, in.y, out_t.x, out_t.y});
+  }
+  return out;
+}
+
+/// The envelope as straight segments, each split until the largest distance of the curve from
+/// its chord (found by maximisation, extremum.hpp) is within the tolerance; `error` receives
+/// the largest such distance.
+void chords(const CounterClockwiseCurve& curve, double ta, double tb, const CurvePoint& a, const CurvePoint& b,
+            double tolerance, int depth, std::vector<Piece>& out, double& error) {
+  const Piece chord{a.x, a.y, b.x, b.y, 0, 0, 0, 0};
+  auto distance = [&](double t) {
+    const CurvePoint p = curve(t);
+    return distance_to_piece(chord, p.x, p.y);
+  };
+  const double e = detail::find_maximum(distance, ta, tb, 8, 1e-4 * (tb - ta)).value;
+  if (e <= tolerance || depth >= 30) {
+    out.push_back(chord);
+    error = std::max(error, e);
+    return;
+  }
+  const double tm = 0.5 * (ta + tb);
+  const CurvePoint m = curve(tm);
+  chords(curve, ta, tm, a, m, tolerance, depth + 1, out, error);
+  chords(curve, tm, tb, m, b, tolerance, depth + 1, out, error);
+}
+
+std::vector<Piece> polyline_of(const CamDesign& d, double sigma, double tolerance, double& error) {
   CounterClockwiseCurve curve{d, sigma};
+  std::vector<double> t = breaks_of(d, sigma);
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end(), [](double a, double b) { return b - a <= 1e-9 * two_pi; }), t.end());
   std::vector<Piece> out;
-  CurvePoint prev = curve(0), first = prev;
-  for (int i = 1; i <= samples; ++i) {
-    const CurvePoint p = i == samples ? first : curve(two_pi * i / samples);
-    out.push_back({prev.x, prev.y, p.x, p.y, 0, 0, 0, 0});
-    prev = p;
+  error = 0;
+  const CurvePoint first = curve(t.front());
+  CurvePoint a = first;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    const CurvePoint b = i + 2 == t.size() ? first : curve(t[i + 1]);
+    chords(curve, t[i], t[i + 1], a, b, tolerance, 0, out, error);
+    a = b;
   }
   return out;
 }
@@ -131,7 +177,7 @@ CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options)
   // The tolerance must hold for what is exported: the profile (the pitch curve offset by the
   // roller), the groove's outer wall and the tool paths, not only for the fitted curve.
   const Exports e = exports_of(d, options);
-  FitOptions fit{options.tolerance, 24, e.offsets()};
+  FitOptions fit{options.tolerance, 24, e.offsets(), corners_of(d, curve)};
   BiarcSpline spline;
   try {
     spline = fit_biarcs(curve, breaks_of(d, sigma), fit, true);
@@ -142,8 +188,10 @@ CamProfile synthesize_profile(const CamDesign& d, const ProfileOptions& options)
                                       options.tolerance,
                                       std::fmod(curve.theta_of(err.parameter()), two_pi) * 180 / std::numbers::pi));
     }
-    // A flat face whose envelope has cusps: no arcs fit the folds; keep the envelope as it is.
-    out.profile.push_back(polyline_of(d, 3600, sigma));
+    // A flat face whose envelope has cusps: no arcs fit the folds; keep the envelope as it is,
+    // as straight segments within the tolerance.
+    out.profile.push_back(polyline_of(d, sigma, options.tolerance, out.profile_error));
+    out.pitch_error = out.profile_error;
     out.profile_is_polyline = true;
     return out;
   }

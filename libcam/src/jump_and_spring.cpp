@@ -105,9 +105,10 @@ SpringSizing size_once(const CamDesign& d, const FollowerTrain& tr, const Sizing
     };
     const detail::Peak k = supremum(d, rate);
     if (std::isinf(k.value) && k.value > 0) {
+      const char* unit = d.follower.motion == FollowerMotion::translating ? "N" : "N*m";
       throw std::invalid_argument(fmt::format(
-          "the preload {:.6g} is too small: at cam angle {:.6g} deg, on the base circle, the follower needs {:.6g}",
-          out.preload, k.x * 180 / std::numbers::pi, need(k.x)));
+          "the preload {:.6g} {} is too small: at cam angle {:.6g} deg, on the base circle, the follower needs {:.6g} {}",
+          out.preload, unit, std::fmod(k.x * 180 / std::numbers::pi, 360.0), need(k.x), unit));
     }
     out.spring_rate = std::max(0.0, k.value);
     return out;

@@ -238,23 +238,44 @@ std::pair<Motion, Motion> MotionProgram::limits_at(const Break& b) const {
   return {curves_[b.segment]->left_at(b.theta), curves_[b.segment]->at(b.theta)};
 }
 
+namespace {
+
+/// Whether a derivative of order n jumps from x to y, beyond the tolerance of a program whose
+/// largest value is `scale` (rounding of the laws' formulas, 10^n times larger per order).
+bool jumps(double x, double y, int order, double scale) {
+  const double t = 1e-9 * scale * std::pow(10.0, order);
+  return std::abs(x - y) > t + 1e-9 * std::max(std::abs(x), std::abs(y));
+}
+
+double jump_scale(const MotionProgram& program) { return std::max(program.max_s(), 1e-12); }
+
+}  // namespace
+
 std::vector<JoinJump> continuity_check(const MotionProgram& program) {
-  std::vector<JoinJump> jumps;
-  const double scale = std::max(program.max_s(), 1e-12);
+  std::vector<JoinJump> jumps_found;
+  const double scale = jump_scale(program);
   for (const MotionProgram::Break& b : program.breaks()) {
     const auto [before, after] = program.limits_at(b);
-    const double tol = 1e-9 * scale;
     const double theta = std::fmod(b.theta, two_pi);
-    auto check = [&](const char* what, double x, double y, double t) {
-      if (std::abs(x - y) > t + 1e-9 * std::max(std::abs(x), std::abs(y)))
-        jumps.push_back({theta, what, x, y, b.segment, b.join});
-    };
-    check("displacement", before.s, after.s, tol);
-    check("velocity", before.ds, after.ds, tol * 10);
-    check("acceleration", before.d2s, after.d2s, tol * 100);
-    check("jerk", before.d3s, after.d3s, tol * 1000);
+    const std::pair<const char*, std::pair<double, double>> checks[4] = {
+        {"displacement", {before.s, after.s}}, {"velocity", {before.ds, after.ds}},
+        {"acceleration", {before.d2s, after.d2s}}, {"jerk", {before.d3s, after.d3s}}};
+    for (int order = 0; order < 4; ++order) {
+      const auto& [what, values] = checks[order];
+      if (jumps(values.first, values.second, order, scale))
+        jumps_found.push_back({theta, what, values.first, values.second, b.segment, b.join});
+    }
   }
-  return jumps;
+  return jumps_found;
+}
+
+std::vector<MotionProgram::Break> velocity_jumps(const MotionProgram& program) {
+  std::vector<MotionProgram::Break> out;
+  for (const MotionProgram::Break& b : program.breaks()) {
+    const auto [before, after] = program.limits_at(b);
+    if (jumps(before.ds, after.ds, 1, jump_scale(program))) out.push_back(b);
+  }
+  return out;
 }
 
 std::vector<Overshoot> table_overshoots(const MotionProgram& program) {

@@ -8,6 +8,8 @@
 // right distance from the spline form the offset region.
 #include <gearkit/cam/arc_spline.hpp>
 
+#include "simple_offset.hpp"
+
 #include <CGAL/Arr_circle_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -47,12 +49,15 @@ QVec exact(const Direction& d) {
 }
 
 /// One element of the spline: an arc (centre c, signed radius R, tangent from ts to te) or,
-/// for a straight biarc, a segment from p to q with tangent ts.
+/// for a straight biarc, a segment from p to q with tangent ts; or a corner at c, where the
+/// tangent turns from ts to te (radius 0: its offset is the arc about c joining the offsets of
+/// the two sides).
 struct Element {
   bool arc = true;
   QVec c, ts, te;
   Q R;
   QVec p, q;
+  bool corner = false;
 };
 
 /// The biarc from knot a to knot b with joint tangent w: with J the left normal, arc centres
@@ -60,7 +65,7 @@ struct Element {
 /// -J (Q - P) = RA (t0 - w) + RB (w - t1), two linear equations for the radii.
 void add_biarc(const Knot& a, const Knot& b, const Direction& joint, std::vector<Element>& out) {
   const QVec P{Q(a.x), Q(a.y)}, Qp{Q(b.x), Q(b.y)};
-  const QVec t0 = exact(a.tangent), t1 = exact(b.tangent), w = exact(joint);
+  const QVec t0 = exact(a.tangent), t1 = exact(incoming(b)), w = exact(joint);
   const QVec d = Qp - P;
   const QVec rhs{d.y, -d.x};
   const QVec u = t0 - w, v = w - t1;
@@ -78,10 +83,39 @@ void add_biarc(const Knot& a, const Knot& b, const Direction& joint, std::vector
   if (w.x != t1.x || w.y != t1.y) out.push_back({true, cB, w, t1, RB, {}, {}});
 }
 
+/// The corner at knot k, if the curve turns there (the offsets of its two sides do not meet).
+void add_corner(const Knot& k, std::vector<Element>& out) {
+  if (!k.corner) return;
+  const QVec tin = exact(k.tangent_in), tout = exact(k.tangent);
+  if (tin.x == tout.x && tin.y == tout.y) return;
+  Element e;
+  e.corner = true;
+  e.c = {Q(k.x), Q(k.y)};
+  e.ts = tin, e.te = tout;
+  e.R = Q(0);
+  out.push_back(e);
+}
+
 Traits::Point_2 one_root(const QVec& p) { return Traits::Point_2(FT(p.x), FT(p.y)); }
+
+/// The offset of a corner: the arc of radius |d| about it from the offset of the arriving side to
+/// that of the leaving side, turning as the tangent turns (the shorter way: a corner turns by
+/// less than 180 deg; a reversal is taken counter-clockwise).
+Traits::Curve_2 corner_offset(const Element& e, const Q& distance) {
+  const QVec source = e.c + distance * left_normal(e.ts);
+  const QVec target = e.c + distance * left_normal(e.te);
+  const Q turn = e.ts.x * e.te.y - e.ts.y * e.te.x;
+  const Kernel::Circle_2 circle(Kernel::Point_2(FT(e.c.x), FT(e.c.y)), FT(distance * distance),
+                                turn >= 0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE);
+  return Traits::Curve_2(circle, one_root(source), one_root(target));
+}
 
 /// The element moved `distance` to its left, as a CGAL curve; false if it shrinks to a point.
 bool offset_curve(const Element& e, const Q& distance, Traits::Curve_2& curve, bool& folded) {
+  if (e.corner) {
+    curve = corner_offset(e, distance);
+    return true;
+  }
   if (!e.arc) {
     const QVec shift = distance * left_normal(e.ts);
     curve = Traits::Curve_2(Kernel::Point_2(FT((e.p + shift).x), FT((e.p + shift).y)),
@@ -195,12 +229,20 @@ OffsetCurve offset_closed_spline(const BiarcSpline& spline, double distance) {
     result.loops.push_back(own);
     return result;
   }
+  // Most offsets neither fold nor cross themselves: then the raw offset is the answer and the
+  // exact arrangement below (three quarters of the time of a cam) would only confirm it.
+  if (auto raw = detail::simple_raw_offset(own, distance)) {
+    result.loops.push_back(std::move(*raw));
+    return result;
+  }
   const CGAL::Failure_behaviour old_error = CGAL::set_error_behaviour(CGAL::THROW_EXCEPTION);
   const CGAL::Failure_behaviour old_warning = CGAL::set_warning_behaviour(CGAL::CONTINUE);
   try {
     std::vector<Element> elements;
-    for (std::size_t k = 0; k + 1 < spline.knots.size(); ++k)
+    for (std::size_t k = 0; k + 1 < spline.knots.size(); ++k) {
       add_biarc(spline.knots[k], spline.knots[k + 1], spline.joints[k], elements);
+      add_corner(spline.knots[k + 1], elements);
+    }
     const Q d(distance);
     std::vector<Traits::Curve_2> curves;
     curves.reserve(elements.size());

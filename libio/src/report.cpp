@@ -11,6 +11,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <ostream>
 #include <sstream>
 
@@ -338,6 +339,22 @@ void append_fixed(std::string& out, double value, int digits) {
   if (ec == std::errc()) out.append(text, end);
   else out += fmt::format("{:.{}f}", value, digits);
   if (out[start] == '-' && out.find_first_not_of("-0.", start) == std::string::npos) out.erase(start, 1);
+}
+
+nlohmann::json json_number(double value) {
+  if (!std::isfinite(value)) return nullptr;
+  if (value == 0) return 0.0;
+  return std::strtod(fmt::format("{:.12g}", value).c_str(), nullptr);
+}
+
+void round_json_numbers(nlohmann::json& tree) {
+  if (tree.is_number_float()) {
+    const double v = tree.get<double>();
+    if (std::isfinite(v)) tree = json_number(v);
+    return;
+  }
+  if (tree.is_structured())
+    for (auto& child : tree) round_json_numbers(child);
 }
 
 std::string fixed(double value, int digits) {

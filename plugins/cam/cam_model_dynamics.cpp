@@ -141,6 +141,14 @@ void read_dynamics(io::MapReader& root, CamModel& model) {
     in.fluctuation = *delta;
   }
   const bool spring = model.design.follower.closure == gc::Closure::spring;
+  // c = 2 zeta sqrt(k M): without a spring (form closure, or a rate of 0) and without the
+  // train's own stiffness there is no k for the ratio to refer to.
+  if (in.damping_ratio && in.train.stiffness == 0 && (spring ? in.spring_rate == 0.0 : in.spring_rate.value_or(0) == 0))
+    io::fail_at(r.mark("damping_ratio"),
+                fmt::format("expected follower_stiffness (or a spring_rate > 0) with damping_ratio: the ratio is of the "
+                            "critical damping 2 sqrt(k M) and this follower has no {}; or give the damping itself "
+                            "(damping: ... {})",
+                            spring ? "spring" : "spring (form closure)", units_of(oscillating).damping_unit));
   in.train.spring_rate = in.spring_rate.value_or(0);
   in.train.preload = in.preload.value_or(0);
   if (!spring && (!in.spring_rate || !in.preload)) {

@@ -183,6 +183,16 @@ void profile_section(const CamModel& model, const CamResult& r, io::Report& rep)
   }
 }
 
+/// Where an undercut lies: "from cam angle A deg to B deg", or "at cam angle A deg" for a fold
+/// narrower than the printed resolution (found between the samples).
+std::string range_text(const gc::ValueAt& range) {
+  const double from = angle_deg(range.theta), to = angle_deg(range.value);
+  if (std::abs(std::remainder(to - from, 360.0)) < 0.01)
+    return fmt::format("at cam angle {} deg (over {:.2g} deg)", io::fixed(angle_deg(0.5 * (range.theta + range.value)), 4),
+                       std::abs(std::remainder(to - from, 360.0)));
+  return fmt::format("from cam angle {} deg to {} deg", io::fixed(from, 2), io::fixed(to, 2));
+}
+
 void geometry_warnings(const CamModel& model, const CamResult& r, io::Report& rep) {
   const gc::CamDesign& d = model.design;
   const gc::CamChecks& c = r.checks;
@@ -195,13 +205,13 @@ void geometry_warnings(const CamModel& model, const CamResult& r, io::Report& re
   for (const gc::ValueAt& u : c.undercut_ranges) {
     rep.warnings.push_back(
         d.follower.contact == gc::Contact::roller
-            ? fmt::format("undercut from cam angle {} deg to {} deg: the roller radius {} mm exceeds the pitch curve's "
+            ? fmt::format("undercut {}: the roller radius {} mm exceeds the pitch curve's "
                           "radius of curvature (min {} mm); the follower will not reproduce the motion there",
-                          io::fixed(angle_deg(u.theta), 2), io::fixed(angle_deg(u.value), 2),
+                          range_text(u),
                           io::fixed(d.follower.roller_radius, 3), io::fixed(c.rho_pitch_min.value, 3))
-            : fmt::format("cusp in the flat-faced profile from cam angle {} deg to {} deg (radius of curvature <= 0); "
+            : fmt::format("cusp in the flat-faced profile {} (radius of curvature <= 0, least {} mm); "
                           "enlarge the base circle to more than {} mm",
-                          io::fixed(angle_deg(u.theta), 2), io::fixed(angle_deg(u.value), 2),
+                          range_text(u), fmt::format("{:.3g}", c.rho_profile_min.value),
                           io::fixed(c.base_radius_min, 5)));
   }
   if (d.follower.motion == gc::FollowerMotion::oscillating && pivot_clearance(model, r) <= 0) {
@@ -224,27 +234,64 @@ void geometry_warnings(const CamModel& model, const CamResult& r, io::Report& re
   }
 }
 
+/// What a velocity jump does to a roller cam: the pitch curve has a corner there.
+std::string corner_remark(const CamModel& model, const CamResult& r, double theta) {
+  if (model.design.follower.contact != gc::Contact::roller) return "";
+  for (const gc::PitchCorner& c : r.checks.corners) {
+    if (std::abs(std::remainder(c.theta - theta, 2 * std::numbers::pi)) > 1e-9) continue;
+    return c.turn > 0 ? fmt::format("; the pitch curve turns {} deg towards the cam there: the profile is cut to a "
+                                    "sharp edge that the roller rounds, so the follower does not reproduce the motion",
+                                    io::fixed(deg(c.turn), 2))
+                      : fmt::format("; the pitch curve turns {} deg away from the cam there: the profile has a hollow of "
+                                    "the roller's radius",
+                                    io::fixed(deg(-c.turn), 2));
+  }
+  return "";
+}
+
+/// The unit of the n-th derivative of the follower's motion per radian of cam angle: "mm/rad^2".
+std::string per_rad(const FollowerUnits& u, const std::string& quantity) {
+  const int n = quantity == "velocity" ? 1 : quantity == "acceleration" ? 2 : quantity == "jerk" ? 3 : 0;
+  return n == 0 ? u.d_unit : n == 1 ? u.d_unit + "/rad" : fmt::format("{}/rad^{}", u.d_unit, n);
+}
+
+/// Jerk jumps: a note listing them, and JSON "jerk_jumps" (at_deg, before and after per rad^3).
+void jerk_remarks(const CamModel& model, const std::vector<const gc::JoinJump*>& jerks, io::Report& rep) {
+  const FollowerUnits u(model);
+  const std::string key = u.d_unit + "_per_rad3";
+  nlohmann::json list = nlohmann::json::array();
+  std::string text;
+  for (const gc::JoinJump* jump : jerks) {
+    text += fmt::format("{}{} deg ({:.6g} to {:.6g} {})", text.empty() ? "" : ", ", io::fixed(angle_deg(jump->theta), 2),
+                        jump->before, jump->after, per_rad(u, "jerk"));
+    list.push_back({{"at_deg", number(angle_deg(jump->theta))}, {"before_" + key, number(jump->before)},
+                    {"after_" + key, number(jump->after)}});
+  }
+  rep.json["jerk_jumps"] = list;
+  if (!jerks.empty())
+    rep.notes.push_back(fmt::format("jerk jumps (finite steps of d3s/dtheta3, harmless at low speed) at cam angle {}", text));
+}
+
 /// Jumps of s, v, a are warnings (an acceleration jump is a force jump: shock and vibration);
 /// jerk jumps are notes. The many acceleration jumps of a pchip table are one warning.
 void continuity_remarks(const CamModel& model, const CamResult& r, io::Report& rep) {
+  const FollowerUnits u(model);
   const auto& segs = model.design.program.segments();
   std::map<std::size_t, std::vector<const gc::JoinJump*>> table_jumps;
-  std::vector<std::string> jerk_places;
+  std::vector<const gc::JoinJump*> jerks;
   for (const gc::JoinJump& jump : r.jumps) {
     const gc::Segment& seg = segs[jump.segment];
     if (jump.quantity == "jerk") {
-      jerk_places.push_back(fmt::format("{} deg ({:.6g} to {:.6g} per rad^3)", io::fixed(angle_deg(jump.theta), 2),
-                                        jump.before, jump.after));
-      continue;
-    }
-    if (!jump.join && seg.kind == gc::SegmentKind::table) {
+      jerks.push_back(&jump);
+    } else if (!jump.join && seg.kind == gc::SegmentKind::table) {
       table_jumps[jump.segment].push_back(&jump);
-      continue;
+    } else {
+      rep.warnings.push_back(fmt::format("{} jumps at cam angle {} deg{}: {:.6g} before, {:.6g} after ({}){}",
+                                         jump.quantity, io::fixed(angle_deg(jump.theta), 2),
+                                         jump.join ? "" : fmt::format(" inside the {} segment", kind_name(seg)),
+                                         jump.before, jump.after, per_rad(u, jump.quantity),
+                                         jump.quantity == "velocity" ? corner_remark(model, r, jump.theta) : ""));
     }
-    rep.warnings.push_back(fmt::format("{} jumps at cam angle {} deg{}: {:.6g} before, {:.6g} after (per rad{})",
-                                       jump.quantity, io::fixed(angle_deg(jump.theta), 2),
-                                       jump.join ? "" : fmt::format(" inside the {} segment", kind_name(seg)),
-                                       jump.before, jump.after, jump.quantity == "acceleration" ? "^2" : ""));
   }
   for (const auto& [segment, jumps] : table_jumps) {
     const gc::JoinJump* worst = jumps.front();
@@ -252,15 +299,11 @@ void continuity_remarks(const CamModel& model, const CamResult& r, io::Report& r
       if (std::abs(j->after - j->before) > std::abs(worst->after - worst->before)) worst = j;
     rep.warnings.push_back(fmt::format(
         "the table from {} deg ({}) has {} jumps of {} at its inner points, the largest at {} deg ({:.6g} to {:.6g} "
-        "per rad^2): use interpolation: bspline for continuous acceleration and jerk",
+        "{}): use interpolation: bspline for continuous acceleration and jerk",
         io::fixed(deg(segs[segment].start), 2), shape_name(segs[segment]), jumps.size(), worst->quantity,
-        io::fixed(angle_deg(worst->theta), 2), worst->before, worst->after));
+        io::fixed(angle_deg(worst->theta), 2), worst->before, worst->after, per_rad(u, worst->quantity)));
   }
-  if (!jerk_places.empty()) {
-    std::string list;
-    for (const std::string& p : jerk_places) list += (list.empty() ? "" : ", ") + p;
-    rep.notes.push_back(fmt::format("jerk jumps (finite steps of d3s/dtheta3, harmless at low speed) at cam angle {}", list));
-  }
+  jerk_remarks(model, jerks, rep);
 }
 
 void table_remarks(const CamModel& model, io::Report& rep) {
@@ -327,9 +370,9 @@ void other_surface_section(const CamModel& model, const CamResult& r, io::Report
                                        "mm: the cam would strike the pivot",
                                        io::fixed(c.radius_max.value, 3), io::fixed(f.pivot_distance, 3)));
   for (const gc::ValueAt& u : c.undercut_ranges)
-    rep.warnings.push_back(fmt::format("undercut of the {} from cam angle {} deg to {} deg: the roller ({} mm) does not "
+    rep.warnings.push_back(fmt::format("undercut of the {} {}: the roller ({} mm) does not "
                                        "fit its hollow; the follower will not reproduce the motion there",
-                                       name, io::fixed(angle_deg(u.theta), 2), io::fixed(angle_deg(u.value), 2),
+                                       name, range_text(u),
                                        io::fixed(gc::roller_radius(groove ? model.design : gc::conjugate_cam_of(model.design)), 3)));
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace gearkit::plugins::cam {
@@ -105,12 +106,22 @@ void force_rows(const CamModel& model, const CamDynamics& r, io::Table& tab, nlo
   j["contact_force_other_max_at_deg"] = number(angle_deg(other.theta));
 }
 
+/// The mean camshaft torque over the samples, 0 where it lies within the rounding of its own
+/// sum: n terms summed one by one err by at most (n - 1) u sum |T_i| (Higham, Accuracy and
+/// Stability of Numerical Algorithms, 2nd ed., eq. 4.4), each T_i by a few u |T_i| more, so a
+/// mean below 2 n u mean|T_i| is round-off around zero (a loss-free cam: no damping, no friction).
+double mean_torque(const std::vector<gc::DynamicState>& s) {
+  const double n = static_cast<double>(s.size());
+  double mean = 0, mean_abs = 0;
+  for (const auto& x : s) mean += x.torque / n, mean_abs += std::abs(x.torque) / n;
+  return std::abs(mean) <= 2 * n * std::numeric_limits<double>::epsilon() * mean_abs ? 0.0 : mean;
+}
+
 void torque_rows(const CamDynamics& r, io::Table& tab, nlohmann::json& j) {
   const auto& s = r.states;
   const auto& tmax = largest(s, [](const auto& x) { return x.torque; });
   const auto& tmin = largest(s, [](const auto& x) { return -x.torque; });
-  double mean = 0;
-  for (const auto& x : s) mean += x.torque / static_cast<double>(s.size());
+  const double mean = mean_torque(s);
   tab.add_row({"largest camshaft torque [N*m]", g(tmax.torque), at(tmax.theta)});
   tab.add_row({"least camshaft torque [N*m]", g(tmin.torque), at(tmin.theta)});
   tab.add_row({"mean camshaft torque [N*m]", g(mean), "-"});
@@ -257,6 +268,10 @@ void dynamics_warnings(const CamModel& model, const CamDynamics& r, io::Report& 
         break;
       }
   }
+  if (model.dynamics->damping_ratio && *model.dynamics->damping_ratio > 0 && r.train.spring_rate + r.train.stiffness == 0)
+    rep.warnings.push_back(fmt::format("damping_ratio {} gives no damping: the sized spring has no rate and the follower "
+                                       "train no stiffness, so the critical damping 2 sqrt(k M) is 0; give damping instead",
+                                       g(*model.dynamics->damping_ratio)));
   if (r.flexible && !r.flexible->periodic)
     rep.warnings.push_back("the undamped flexible follower is at resonance with the cam: no steady response");
   if (r.flexible && spring_closed(model)) {

@@ -88,7 +88,8 @@ int run_synth_command(plugin::CommandContext& context) {
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   const io::CommonOptions common = io::common_options(vm);
 
-  const Output out = run_task(vm["task"].as<std::string>(), vm["file"].as<std::string>(), read_overrides(vm));
+  Output out = run_task(vm["task"].as<std::string>(), vm["file"].as<std::string>(), read_overrides(vm));
+  io::round_json_numbers(out.report.json);  // 17.66 mm, not 17.660000000000004 after m -> mm
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (vm.count("mechanism")) outputs.add("--mechanism", vm["mechanism"].as<std::string>(), out.mechanism_yaml);
   if (vm.count("drawing")) outputs.add("--drawing", vm["drawing"].as<std::string>(), drawing_text(out, vm["drawing"].as<std::string>()));

@@ -150,6 +150,44 @@ TEST(CamChecks, FlatFaceSmallestBaseRadiusIsTheSupremumNotASample) {
   }
 }
 
+TEST(CamChecks, FlatFaceCuspNarrowerThanTheSamplesIsAnUndercut) {
+  // Issue 18: 4e-7 mm below the exact smallest base circle rho_min was found negative but
+  // `undercut` was false and no range was given: the fold lay between the samples. Independent
+  // bound: the 3-4-5 rise P(u) = 10u^3 - 15u^4 + 6u^5, P'' = 60u - 180u^2 + 120u^3 (Norton, Design
+  // of Machinery, eq. 8.23) gives rho = Rb + L (P + P'' / beta^2) (eq. 8.31) on the rise and, by
+  // the symmetry P(1 - u) = 1 - P(u), the same minimum on the return at the mirrored angle.
+  const double L = 15, beta = M_PI / 2;
+  auto f = [&](double u) { return L * (10 * u * u * u - 15 * std::pow(u, 4) + 6 * std::pow(u, 5)) +
+                                  L / (beta * beta) * (60 * u - 180 * u * u + 120 * u * u * u); };
+  double u_min = 0, f_min = INFINITY;
+  for (int i = 0; i <= 1000000; ++i)
+    if (const double u = i / 1e6; f(u) < f_min) f_min = f(u), u_min = u;
+  for (double a = u_min - 1e-6, b = u_min + 1e-6; b - a > 1e-15;) {  // golden-section refinement
+    const double x1 = b - 0.618034 * (b - a), x2 = a + 0.618034 * (b - a);
+    (f(x1) < f(x2) ? b : a) = f(x1) < f(x2) ? x2 : x1;
+    u_min = 0.5 * (a + b);
+  }
+  const double bound = -f(u_min);  // Rb > -(s + s'')
+  const MotionProgram program({gearkit::cam::testing::move(SegmentKind::rise, 0, 90, Law::polynomial_345, L),
+                               gearkit::cam::testing::dwell(90, 180),
+                               gearkit::cam::testing::move(SegmentKind::fall, 180, 270, Law::polynomial_345, L),
+                               gearkit::cam::testing::dwell(270, 360)});
+  CamDesign d{program, translating(Contact::flat_face), bound - 4e-7, Rotation::cw};
+  const CamChecks below = check_design(d, {3600, rad(30)});
+  EXPECT_LT(below.rho_profile_min.value, 0);
+  EXPECT_TRUE(below.undercut);
+  ASSERT_EQ(below.undercut_ranges.size(), 2u);
+  const double at[2] = {u_min * 90, 180 + (1 - u_min) * 90};
+  for (int k = 0; k < 2; ++k) {
+    const ValueAt& r = below.undercut_ranges[k];
+    EXPECT_LE(r.theta, rad(at[k]) + 1e-9) << at[k];
+    EXPECT_GE(r.value, rad(at[k]) - 1e-9) << at[k];
+    EXPECT_LT(r.value - r.theta, rad(0.1));  // narrower than the 0.1 deg sampling
+  }
+  d.base_radius = bound + 1e-7;
+  EXPECT_FALSE(check_design(d, {3600, rad(30)}).undercut);
+}
+
 TEST(CamChecks, TranslatingRollerSmallestBaseRadiusIsTheSupremum) {
   // tan(phi) = (s' - e) / (s0 + s) (Norton, eq. 8.29b): with the base radius found, the largest
   // pressure angle found equals the limit to 1e-9 and no dense sample exceeds it.

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <numbers>
 #include <sstream>
 
 namespace {
@@ -47,7 +49,7 @@ TEST(CamCommand, Otm2015Problem2Report) {
   EXPECT_EQ(j["profile_points"].size(), 360u);
   // The exam's motion climbs 57.3 deg in 60 deg of cam: with any reasonable arm the pressure
   // angle exceeds the 45 deg limit, and the report says so.
-  EXPECT_GT(j["pressure_angle_max_deg"].get<double>(), 45);
+  EXPECT_GT(std::abs(j["pressure_angle_max_deg"].get<double>()), 45);  // signed: the largest is on the return
   ASSERT_FALSE(j["warnings"].empty());
   EXPECT_NE(j["warnings"][0].get<std::string>().find("pressure angle"), std::string::npos);
 }
@@ -331,13 +333,39 @@ TEST(CamCommand, JsonNumbersCarryNoConversionNoise) {
 }
 
 TEST(CamCommand, PivotInsideTheCamsSweepIsAWarning) {
-  // Issue 18: the OTM example's cam reaches 134.3 mm and sweeps through its own pivot at 120 mm.
-  const auto j = run_json(quoted(example("otm2015_p2_oscillating_cycloidal.yaml")));
+  // Issue 18: the OTM example's first dimensions (pivot 120, arm 100, base 40 mm) made a cam that
+  // reaches 134.3 mm and sweeps through its own pivot at 120 mm: a warning.
+  std::string yaml;
+  {
+    std::ifstream in(example("otm2015_p2_oscillating_cycloidal.yaml"));
+    yaml.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (auto [from, to] : {std::pair{"base_radius: 75 mm", "base_radius: 40 mm"}, {"pivot_distance: 170 mm", "pivot_distance: 120 mm"},
+                          {"arm_length: 90 mm", "arm_length: 100 mm"}, {"  pivot_radius: 10 mm\n", ""}}) {
+    ASSERT_NE(yaml.find(from), std::string::npos) << from;
+    yaml.replace(yaml.find(from), std::string(from).size(), to);
+  }
+  const auto j = run_json(quoted(write_model("otm_clash.yaml", yaml)));
   EXPECT_NEAR(j["radius_max_mm"].get<double>(), 134.3, 0.05);
   EXPECT_LT(j["pivot_clearance_mm"].get<double>(), 0);
   bool warned = false;
   for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().find("strike the pivot") != std::string::npos;
   EXPECT_TRUE(warned);
+}
+
+TEST(CamCommand, ShippedOtmExampleClearsItsPivot) {
+  // Issue 18: a shipped example must not clash. Its dimensions (chosen, not in the seed): pivot
+  // a = 170, arm L = 90, roller 10, base 75 mm (prime radius 85), boss 10 mm. Law of cosines:
+  // cos(gamma_0) = (a^2 + L^2 - 85^2) / (2 a L); at the top dwell (psi = 1 rad) the roller centre
+  // is at R^2 = a^2 + L^2 - 2 a L cos(gamma_0 + 1) from the cam centre, and the cam's largest
+  // radius is R - 10 mm there (the dwell's profile is a circle about the centre).
+  const double a = 170, L = 90, gamma0 = std::acos((a * a + L * L - 85.0 * 85) / (2 * a * L));
+  const double reach = std::sqrt(a * a + L * L - 2 * a * L * std::cos(gamma0 + 1)) - 10;
+  const auto j = run_json(quoted(example("otm2015_p2_oscillating_cycloidal.yaml")));
+  EXPECT_NEAR(j["radius_max_mm"].get<double>(), reach, 1e-6);
+  EXPECT_NEAR(j["pivot_clearance_mm"].get<double>(), a - 10 - reach, 1e-6);
+  EXPECT_GT(j["pivot_clearance_mm"].get<double>(), 5);
+  for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("pivot"), std::string::npos) << w;
 }
 
 TEST(CamCommand, PolynomialAndBsplineSegmentsFromTheModelFile) {
@@ -368,6 +396,115 @@ TEST(CamCommand, PolynomialAndBsplineSegmentsFromTheModelFile) {
   }
   const double beta = std::numbers::pi / 2;
   EXPECT_NEAR(a_max, 5.773502691896 * 15 / (beta * beta), 2e-3);  // sampled at 1 deg: the peak within 2e-3
+}
+
+}  // namespace
+
+namespace {
+
+/// The benchmark cam (examples/cams/translating_roller_cycloidal.yaml) with a uniform-velocity
+/// rise: ds/dtheta jumps from 0 to 20 mm / (120 deg) = 9.5493 mm/rad at 0 deg and back at 120 deg.
+const std::string kUniformRise = R"(cam: {base_radius: 40 mm, speed: 300 rpm}
+follower: {type: translating, contact: roller, roller_radius: 10 mm}
+motion:
+  - {type: rise, from: 0 deg, to: 120 deg, law: uniform_velocity, lift: 20 mm}
+  - {type: dwell, from: 120 deg, to: 180 deg}
+  - {type: return, from: 180 deg, to: 300 deg, law: cycloidal, lift: 20 mm}
+  - {type: dwell, from: 300 deg, to: 360 deg}
+output: {tolerance: 0.001 mm, cutter_radius: 8 mm}
+)";
+
+bool has_warning(const nlohmann::json& j, const std::string& fragment) {
+  for (const auto& w : j["warnings"])
+    if (w.get<std::string>().find(fragment) != std::string::npos) return true;
+  return false;
+}
+
+TEST(CamCommand, RollerWithAVelocityJumpIsAReportWithItsCorners) {
+  // Issue 18: the roller version exited 2 ("cannot fit arcs ... near cam angle 180 deg") while the
+  // knife-edge and flat-face versions warn. The pitch curve has corners: on the prime circle
+  // (50 mm) the tangent turns by atan(9.5493 / 50) = 10.81 deg away from the cam at 0 deg, at
+  // the top (70 mm) by atan(9.5493 / 70) = 7.77 deg towards it at 120 deg (hand derivation).
+  const fs::path model = write_model("uniform_rise.yaml", kUniformRise);
+  const fs::path dxf = scratch_dir() / "uniform_rise.dxf", csv = scratch_dir() / "uniform_rise.csv";
+  const auto j = run_json(quoted(model) + " --dxf " + quoted(dxf) + " --csv " + quoted(csv));
+  EXPECT_TRUE(has_warning(j, "velocity jumps at cam angle 0.00 deg: 0 before, 9.5493 after (mm/rad); the pitch curve "
+                             "turns 10.81 deg away from the cam"))
+      << j["warnings"].dump();
+  EXPECT_TRUE(has_warning(j, "velocity jumps at cam angle 120.00 deg: 9.5493 before, 0 after (mm/rad); the pitch curve "
+                             "turns 7.77 deg towards the cam"))
+      << j["warnings"].dump();
+  EXPECT_LE(j["profile_deviation_mm"].get<double>(), 1e-3);
+  // Read back, the profile passes through every analytic contact point within the tolerance,
+  // except those the roller cannot reach at the convex corner: there the two sides' offsets
+  // cross R_r tan(7.77 / 2 deg) = 0.68 mm before their ends, 0.56 deg of cam on the 70 mm circle.
+  std::ifstream in(csv);
+  const fs::path kept = scratch_dir() / "uniform_rise_kept.csv";
+  std::ofstream out(kept);
+  std::string line;
+  std::getline(in, line);
+  out << line << "\n";
+  while (std::getline(in, line))
+    if (std::abs(std::stod(line.substr(0, line.find(','))) - 120) > 0.6) out << line << "\n";
+  out.close();
+  const auto check = ezdxf_check(dxf, "--points " + quoted(kept) +
+                                          " --x-column profile_x_mm --y-column profile_y_mm --layer profile --tol 0.001");
+  ASSERT_FALSE(check.contains("read_error")) << check.dump();
+  EXPECT_LE(check["max_deviation_mm"].get<double>(), 1e-3) << check.dump();
+  EXPECT_EQ(check["closed_polylines"]["profile"], 1);
+}
+
+TEST(CamCommand, CuspedFlatFaceReportsTheDeviationOfWhatItExports) {
+  // Issue 18: with cusps the flat-face envelope is exported as straight segments; the report said
+  // profile_deviation_mm 0 while the DXF read back missed the envelope by 3.39e-5 mm (chord sag).
+  const fs::path model = write_model("cusped.yaml", R"(cam: {base_radius: 10.7 mm, rotation: cw}
+follower: {type: translating, contact: flat_face}
+motion:
+  - {type: rise, from: 0 deg, to: 90 deg, law: 3-4-5, lift: 15 mm}
+  - {type: dwell, from: 90 deg, to: 180 deg}
+  - {type: return, from: 180 deg, to: 270 deg, law: 3-4-5}
+  - {type: dwell, from: 270 deg, to: 360 deg}
+output: {tolerance: 0.0001 mm, samples: 20000}
+)");
+  const fs::path dxf = scratch_dir() / "cusped.dxf", csv = scratch_dir() / "cusped.csv";
+  const auto j = run_json(quoted(model) + " --dxf " + quoted(dxf) + " --csv " + quoted(csv));
+  EXPECT_TRUE(has_warning(j, "exported as straight segments"));
+  const double reported = j["profile_deviation_mm"].get<double>();
+  EXPECT_GT(reported, 0);
+  EXPECT_LE(reported, 1e-4);
+  const auto check = ezdxf_check(dxf, "--points " + quoted(csv) +
+                                          " --x-column profile_x_mm --y-column profile_y_mm --layer profile --tol 0.0001");
+  ASSERT_FALSE(check.contains("read_error")) << check.dump();
+  EXPECT_LE(check["max_deviation_mm"].get<double>(), reported + 1e-9) << check.dump();
+}
+
+TEST(CamCommand, JerkJumpsAreInTheJson) {
+  // Issue 18: the jerk-jump notes were in the text only. The 3-4-5 law's jerk at its ends is
+  // 60 L / beta^3 = 60 x 15 / (pi/2)^3 = 232.211 mm/rad^3 (Norton, Design of Machinery, eq. 8.24).
+  const auto j = run_json(quoted(example("translating_flat_345.yaml")));
+  ASSERT_TRUE(j["jerk_jumps"].is_array());
+  ASSERT_EQ(j["jerk_jumps"].size(), 4u);
+  const double jump = 60 * 15 / std::pow(std::numbers::pi / 2, 3);
+  std::map<int, std::pair<double, double>> at;
+  for (const auto& k : j["jerk_jumps"])
+    at[static_cast<int>(std::lround(k["at_deg"].get<double>()))] = {k["before_mm_per_rad3"].get<double>(),
+                                                                     k["after_mm_per_rad3"].get<double>()};
+  EXPECT_NEAR(at.at(0).second, jump, 1e-6);
+  EXPECT_NEAR(at.at(90).first, jump, 1e-6);
+  EXPECT_NEAR(at.at(180).second, -jump, 1e-6);
+  EXPECT_NEAR(at.at(270).first, -jump, 1e-6);
+}
+
+TEST(CamCommand, JumpMessagesCarryTheirUnits) {
+  // Issue 18: "(per rad^2)" said neither mm nor deg.
+  const auto j = run_json(quoted(example("offset_knife_table.yaml")));
+  bool acceleration = false;
+  for (const auto& w : j["warnings"]) {
+    const std::string text = w.get<std::string>();
+    if (text.rfind("acceleration jumps at cam angle", 0) == 0) acceleration = text.find(" after (mm/rad^2)") != std::string::npos;
+  }
+  EXPECT_TRUE(acceleration) << j["warnings"].dump();
+  EXPECT_TRUE(has_warning(j, "mm/rad^2): use interpolation: bspline")) << j["warnings"].dump();
 }
 
 }  // namespace

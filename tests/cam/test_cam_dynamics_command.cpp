@@ -249,8 +249,12 @@ contact: {width: 10 mm}
 )", "a knife edge has no Hertz contact");
   expect_error("nodyn.yaml", head + "contact: {width: 10 mm}\n", "add a dynamics: section");
   expect_error("dynopt.yaml", head, "expected a dynamics: section", " --dyn x.yaml");
+  // On the base circle (a dwell: no inertia, pressure angle 0) the follower needs exactly the
+  // least contact force, 5 N: both with their units.
   expect_error("preload.yaml", head + "dynamics: {mass: 7.5 kg, preload: 1 N, min_contact_force: 5 N}\n",
-               "the preload 1 is too small");
+               "the preload 1 N is too small");
+  expect_error("preload_need.yaml", head + "dynamics: {mass: 7.5 kg, preload: 1 N, min_contact_force: 5 N}\n",
+               "the follower needs 5 N");
   expect_error("spring_torsion.yaml", R"(cam: {base_radius: 40 mm, speed: 100 rpm}
 follower: {type: oscillating, contact: roller, roller_radius: 10 mm, pivot_distance: 130 mm, arm_length: 100 mm}
 motion:
@@ -264,6 +268,53 @@ motion:
   - {type: rise, from: 0 deg, to: 180 deg, lift: 10 mm}
   - {type: return, from: 180 deg, to: 360 deg}
 )", "a conjugate cam needs follower.second_roller");
+}
+
+/// The conjugate example's cams and arm without damping: a loss-free follower train.
+const std::string kLossFreeConjugate = R"(cam: {base_radius: 45 mm, type: conjugate, speed: 300 rpm}
+follower:
+  type: oscillating
+  contact: roller
+  roller_radius: 10 mm
+  pivot_distance: 140 mm
+  arm_length: 105 mm
+  second_roller: {arm_length: 120 mm, arm_angle: -55 deg}
+motion:
+  - {type: rise, from: 0 deg, to: 120 deg, law: cycloidal, lift: 18 deg}
+  - {type: dwell, from: 120 deg, to: 180 deg}
+  - {type: return, from: 180 deg, to: 300 deg, law: cycloidal}
+  - {type: dwell, from: 300 deg, to: 360 deg}
+)";
+
+TEST(CamDynamicsCommand, LossFreeCamHasNoMeanTorqueNotRoundOff) {
+  // Issue 18: with no damping and no friction the camshaft returns every joule it gives (the
+  // inertia torque I q'' q' omega^2 integrates to [I q'^2 omega^2 / 2] = 0 over the turn), but
+  // the report printed -1.3652e-17 N*m and -4.2889e-16 W: round-off, now 0.
+  const auto model = write_model("lossfree.yaml", kLossFreeConjugate + "dynamics: {inertia: 0.006 kg*m^2}\n");
+  const auto j = run_json(quoted(model));
+  EXPECT_EQ(j["dynamics"]["camshaft_torque_mean_N_m"].get<double>(), 0.0);
+  EXPECT_EQ(j["dynamics"]["power_mean_W"].get<double>(), 0.0);
+  EXPECT_EQ(j["dynamics"]["work_per_cycle_J"].get<double>(), 0.0);
+  const std::string text = run(gearkit() + quoted(model)).output;
+  const auto row = text.find("mean camshaft torque [N*m]");
+  ASSERT_NE(row, std::string::npos) << text;
+  std::istringstream cells(text.substr(row + 26, text.find('\n', row) - row - 26));
+  std::string value;
+  cells >> value;
+  EXPECT_EQ(value, "0") << text;
+}
+
+TEST(CamDynamicsCommand, DampingRatioNeedsAStiffness) {
+  // Issue 18: damping_ratio without a spring and without follower_stiffness gave zero damping
+  // silently (c = 2 zeta sqrt(k M) with k = 0).
+  expect_error("ratio.yaml", kLossFreeConjugate + "dynamics: {inertia: 0.006 kg*m^2, damping_ratio: 0.05}\n",
+               "expected follower_stiffness (or a spring_rate > 0) with damping_ratio");
+  // With the train's stiffness the ratio refers to it: c = 2 x 0.05 x sqrt(20000 x 0.006) = 1.0954 N*m*s/rad.
+  const auto model = write_model("ratio_ok.yaml", kLossFreeConjugate +
+                                                      "dynamics: {inertia: 0.006 kg*m^2, damping_ratio: 0.05, "
+                                                      "follower_stiffness: 20000 N*m/rad}\n");
+  const auto j = run_json(quoted(model));
+  EXPECT_NEAR(j["dynamics"]["damping_N_m_s_per_rad"].get<double>(), 2 * 0.05 * std::sqrt(20000 * 0.006), 1e-9);
 }
 
 }  // namespace

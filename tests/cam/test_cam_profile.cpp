@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace {
 
@@ -150,7 +151,15 @@ TEST(CamProfile, CuspedFlatFaceEnvelopeIsKeptAsAPolyline) {
   EXPECT_TRUE(p.profile_is_polyline);
   ASSERT_EQ(p.profile.size(), 1u);
   for (const Piece& q : p.profile[0]) EXPECT_FALSE(q.is_arc());
-  EXPECT_EQ(p.profile[0].size(), 3600u);
+  // Its chords stay within the tolerance of the envelope, and the deviation reported is what a
+  // dense set of envelope points (every 0.01 deg) finds: not 0 (issue 18).
+  std::vector<Vec2> envelope;
+  for (int i = 0; i < 36000; ++i) envelope.push_back(contact_at(d, 2 * std::numbers::pi * i / 36000).contact);
+  const double measured = max_deviation(p.profile, envelope);
+  EXPECT_GT(p.profile_error, 0);
+  EXPECT_LE(p.profile_error, 1e-3);
+  EXPECT_LE(measured, p.profile_error + 1e-12);
+  EXPECT_GT(measured, 0.5 * p.profile_error);
 }
 
 }  // namespace

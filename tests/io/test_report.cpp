@@ -74,6 +74,18 @@ TEST(Report, FixedDropsNegativeZero) {
 
 // Issue 11 item 10: a non-finite number in a report is never silent. JSON keeps it as null (the
 // only JSON for it) and a warning names each quantity once, however many rows hold it.
+TEST(Report, JsonNumbersDropConversionNoise) {
+  // 0.01766 m written in mm and 30 deg through radians: the last bits are conversion noise.
+  EXPECT_EQ(json_number(0.01766 * 1000).dump(), "17.66");
+  EXPECT_EQ(json_number(30 * (M_PI / 180) * (180 / M_PI)).dump(), "30.0");
+  EXPECT_TRUE(json_number(std::nan("")).is_null());
+  nlohmann::json tree = {{"a_mm", 0.01766 * 1000}, {"list", {0.1 + 0.2, 7, "text"}}, {"nested", {{"b", 1.0 / 3}}}};
+  round_json_numbers(tree);
+  EXPECT_EQ(tree["a_mm"].dump(), "17.66");
+  EXPECT_EQ(tree["list"].dump(), R"([0.3,7,"text"])");
+  EXPECT_EQ(tree["nested"]["b"].dump(), "0.333333333333");
+}
+
 TEST(Report, NonFiniteResultsAreNamedInAWarning) {
   Report r = sample();
   r.json["ratio"] = std::numeric_limits<double>::infinity();

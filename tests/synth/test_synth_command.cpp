@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -124,4 +125,35 @@ TEST(SynthCommand, BadInputIsOneLine) {
   const fs::path far = write_task("far.yaml", "swing: 45 deg\ntime_ratio: 1.25\nrocker: 100 mm\nground: 1 mm\n");
   expect_bad_input(run_gearkit("synth crank-rocker " + shell_quote(far.string())), "no Grashof crank-rocker");
   expect_bad_input(run_gearkit("synth dwell " + example("dwell.yaml") + " --mechanism /nonexistent-dir/x.yaml"), "--mechanism");
+}
+
+TEST(SynthCommand, JsonNumbersCarryNoConversionNoise) {
+  // Issue 19: the target 17.66 mm came back as 17.660000000000004 after mm -> m -> mm; values are
+  // written to 12 significant digits, as the cam command writes them.
+  const auto r = run_gearkit("synth path " + example("path_ellipse.yaml") + " --evaluations 20000 --restarts 2 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.find("17.660000000000004"), std::string::npos);
+  EXPECT_EQ(r.out.find("000000000"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("999999999"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["targets"][1]["target_mm"][0].dump(), "17.66");
+}
+
+TEST(SynthCommand, GrashofLineIsInMillimetres) {
+  // Issue 19: the Grashof line said "s + l = 0.153677 m" in a report in mm. Here s + l is the
+  // shortest plus the longest link and p + q the other two (Norton, Design of Machinery, eq. 2.8),
+  // from the report's own link lengths in mm.
+  const auto j = synth_json("function " + example("function_log10.yaml"));
+  const auto& k = j["linkage"];
+  std::vector<double> links{k["ground_mm"].get<double>(), k["crank_mm"].get<double>(), k["coupler_mm"].get<double>(),
+                            k["rocker_mm"].get<double>()};
+  std::sort(links.begin(), links.end());
+  const std::string text = j["grashof"].get<std::string>();
+  const auto sl = text.find("s + l = "), pq = text.find("p + q = ");
+  ASSERT_NE(sl, std::string::npos) << text;
+  ASSERT_NE(pq, std::string::npos) << text;
+  EXPECT_NEAR(std::stod(text.substr(sl + 8)), links[0] + links[3], 1e-3) << text;
+  EXPECT_NEAR(std::stod(text.substr(pq + 8)), links[1] + links[2], 1e-3) << text;
+  EXPECT_EQ(text.substr(text.find(' ', sl + 8), 4), " mm ") << text;
+  EXPECT_EQ(text.substr(text.find(' ', pq + 8), 3), " mm") << text;
 }

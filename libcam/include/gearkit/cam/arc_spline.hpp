@@ -38,14 +38,22 @@ struct Direction {
   double angle() const;
 };
 
-/// A point of the spline with its tangent direction (the direction of travel).
+/// A point of the spline with its tangent direction (the direction of travel). At a corner the
+/// curve arrives with `tangent_in` and leaves with `tangent`: the biarc ending here uses the
+/// first, the one starting here the second.
 struct Knot {
   double x = 0, y = 0;
   Direction tangent;
+  bool corner = false;
+  Direction tangent_in;  ///< only if `corner`
 };
 
+/// The direction in which the curve arrives at the knot.
+inline const Direction& incoming(const Knot& k) { return k.corner ? k.tangent_in : k.tangent; }
+
 /// knots[i] -> knots[i+1] is one biarc whose two arcs meet with tangent joints[i].
-/// A closed spline repeats its first knot at the end (knots.front() == knots.back()).
+/// A closed spline repeats its first knot at the end (knots.front() == knots.back(), the last
+/// one with the incoming tangent if the curve has a corner there).
 struct BiarcSpline {
   std::vector<Knot> knots;
   std::vector<Direction> joints;
@@ -71,6 +79,13 @@ struct CurvePoint {
   double tx = 0, ty = 0;
 };
 
+/// Where a piecewise smooth curve has a corner: its parameter and the unit tangents with which
+/// the curve arrives (from smaller parameters) and leaves.
+struct CurveCorner {
+  double t = 0;
+  double in_x = 0, in_y = 0, out_x = 0, out_y = 0;
+};
+
 struct FitOptions {
   double tolerance = 1e-4;  ///< largest distance from the curve to the arcs [length]
   int max_depth = 24;       ///< interval halvings before giving up on an interval
@@ -80,6 +95,10 @@ struct FitOptions {
   /// Where an arc is smaller than the offset (it would turn inside out, the offset folds and
   /// is trimmed) that arc is not checked at that offset.
   std::vector<double> offsets;
+  /// The curve's corners (each is made a break): the fit keeps both tangents there instead of
+  /// chasing the corner with ever smaller biarcs. For a closed curve a corner at its start is
+  /// given at breaks.front() (the tangent it leaves with) or breaks.back() (arrives with), or both.
+  std::vector<CurveCorner> corners;
 };
 
 /// The fit cannot meet the tolerance near curve parameter `parameter` (a cusp or a corner).
@@ -98,7 +117,8 @@ class FitError : public GeometryError {
 /// distance over the biarc's interval (sampling to bracket each local maximum, then golden-section
 /// search), at every requested offset -- is within the tolerance; the tolerance is thus a bound
 /// on the exported arcs, not a sampled estimate. With `closed`, the last knot is made identical
-/// to the first. Breaks should include the places where the curvature jumps.
+/// to the first. Breaks should include the places where the curvature jumps; corners (where the
+/// tangent jumps) go in FitOptions::corners.
 /// @throws FitError if an interval cannot meet the tolerance within max_depth halvings
 ///         (a cusp or a corner in the curve); GeometryError if the range is empty.
 BiarcSpline fit_biarcs(const std::function<CurvePoint(double)>& curve, std::vector<double> breaks,
@@ -153,7 +173,8 @@ struct OffsetCurve {
 
 /// Offsets a closed, counter-clockwise, non-self-intersecting biarc spline by `distance` to its
 /// left (inwards: the inset of the region it bounds; negative: outwards). The raw offset (each
-/// arc's concentric arc) is built exactly and put in a CGAL arrangement of circular arcs
+/// arc's concentric arc, and at each corner the arc of radius |distance| about the corner that
+/// joins the offsets of its two sides) is built exactly and put in a CGAL arrangement of circular arcs
 /// (Arr_circle_segment_traits_2, exact kernel); the faces at the right distance from the spline
 /// are kept. distance == 0 returns the spline's own arcs.
 /// @throws GeometryError if CGAL reports a failure (its error behaviour is set to throw) or the

@@ -32,6 +32,7 @@ struct CamChecks {
   double face_min = 0, face_max = 0;     ///< flat face: contact positions along the face [mm]
   double base_radius_min = 0;  ///< smallest base circle meeting the limit (pressure angle; flat: rho > 0) [mm]
   ValueAt radius_max;          ///< largest radius of the profile (the circle the cam sweeps) [mm]
+  std::vector<PitchCorner> corners;  ///< corners of the pitch curve (velocity jumps), see pitch_corners
 };
 
 /// Evaluates the design at options.samples cam angles; the extremes (pressure angle, radii of

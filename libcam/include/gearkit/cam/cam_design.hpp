@@ -11,6 +11,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace gearkit::cam {
 
@@ -115,6 +116,25 @@ struct ContactState {
 
 /// The contact geometry at cam angle theta. Requires validate(design) to have passed.
 ContactState contact_at(const CamDesign& design, double theta);
+
+/// The same for a given follower motion at theta: at a break of the program, its limit from
+/// either side (MotionProgram::limits_at).
+ContactState contact_at(const CamDesign& design, double theta, const Motion& motion);
+
+/// A corner of the pitch curve (the knife edge's profile), where the follower's velocity jumps.
+struct PitchCorner {
+  double theta = 0;        ///< cam angle [rad], as in MotionProgram::breaks (start .. start + 2 pi)
+  Vec2 point;              ///< the corner, cam frame [mm]
+  Vec2 before, after;      ///< unit tangents d(pitch)/dtheta just before and after it (cam frame)
+  double turn = 0;         ///< angle from `before` to `after`, > 0 where the curve turns towards the
+                           ///< cam (a convex corner: a roller cannot follow it, the profile is cut
+                           ///< sharp there), < 0 away from it (the profile has a hollow of the
+                           ///< roller's radius) [rad]
+};
+
+/// Every corner of the pitch curve of the surface the design describes (none for flat faces,
+/// whose velocity jumps make a straight flank or a cusp of the envelope instead).
+std::vector<PitchCorner> pitch_corners(const CamDesign& design);
 
 /// The radius of the roller touching the surface contact_at() describes (the second roller's on
 /// the conjugate cam); 0 for knife edges and flat faces [mm].

@@ -165,6 +165,10 @@ struct JoinJump {
 /// tolerance of the program's scale.
 std::vector<JoinJump> continuity_check(const MotionProgram& program);
 
+/// The breaks where ds/dtheta jumps (the "velocity" jumps of continuity_check): there the pitch
+/// curve has a corner.
+std::vector<MotionProgram::Break> velocity_jumps(const MotionProgram& program);
+
 /// Where a table's curve leaves the range of its points: the largest excess above the
 /// highest point of the table (s_peak > max point), for interpolants that can overshoot
 /// (cubic). Dips below the base circle are errors (see MotionProgram).

@@ -48,6 +48,15 @@ std::vector<std::string> non_finite_warnings(const std::vector<std::string>& nam
 /// silent). emit() calls it on every report, so a command need not.
 void warn_non_finite(Report& report);
 
+/// A JSON number rounded to 12 significant digits: a value converted between units (m -> mm,
+/// rad -> deg) carries noise in its last bits (30 deg comes back as 29.999999999999996, 17.66 mm
+/// as 17.660000000000004) that no input can justify; null for a non-finite value.
+nlohmann::json json_number(double value);
+
+/// json_number applied to every floating-point number of a JSON tree (integers, strings and
+/// non-finite values are left as they are).
+void round_json_numbers(nlohmann::json& tree);
+
 /// Fixed-point formatting with `digits` decimals, correctly rounded; "-0.000" prints as "0.000".
 std::string fixed(double value, int digits);
 /// The same, appended to `out`.
