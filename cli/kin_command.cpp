@@ -41,7 +41,7 @@ std::string input_unit(const mechanism::Mechanism& mech, int driver) { return an
 std::string input_key(const mechanism::Mechanism& mech, int driver) { return "input_" + input_unit(mech, driver); }
 
 double shown_output(const kin::Output& o, double v) { return o.angular() ? v * kRadToDeg : v * 1000.0; }
-std::string output_unit(const kin::Output& o) { return o.angular() ? "deg" : "mm"; }
+std::string output_unit(const kin::Output& o) { return kin::output_units(o).value; }
 
 // START:END:STEP with the driver's unit as default.
 mechanism::DriverRange parse_sweep(const std::string& text, io::Quantity q, std::string_view unit) {
@@ -124,7 +124,7 @@ KinPosition describe_position(const mechanism::Mechanism& mech, kin::Data& data,
     p.output_ratios.push_back(dq.size() ? kin::output_derivative(mech.model, data, o, dq) : NAN);
   }
   if (const auto fb = kin::find_four_bar(mech.model)) p.transmission_angle = kin::transmission_angle(*fb, data);
-  if (mech.model.has_loads()) p.forces = kin::solve_forces(mech.model, data);
+  if (mech.model.has_loads()) p.forces = kin::solve_forces(mech.model, data, driver);
   return p;
 }
 
@@ -271,13 +271,16 @@ io::Report build_report(const mechanism::Mechanism& mech, const KinAnalysis& a) 
       const double rate_scale = o.angular() ? 1.0 : 1000.0;
       const std::string u = output_unit(o);
       outs[o.name + "_" + u] = shown_output(o, p.outputs[k].value);
-      outs[o.name + (o.angular() ? "_rate_rad_s" : "_rate_mm_s")] = p.outputs[k].rate * rate_scale;
-      outs[o.name + (o.angular() ? "_acceleration_rad_s2" : "_acceleration_mm_s2")] = p.outputs[k].acceleration * rate_scale;
+      const kin::OutputUnits units = kin::output_units(o);
+      if (*units.rate) outs[o.name + "_rate_" + units.rate] = p.outputs[k].rate * rate_scale;
+      if (*units.acceleration) outs[o.name + "_acceleration_" + units.acceleration] = p.outputs[k].acceleration * rate_scale;
       // Ratio in the units shown: output unit per input unit.
       const double ratio = p.output_ratios[k] * (o.angular() ? 1.0 : 1000.0) / (angular(mech, driver) ? 1.0 : 1000.0);
-      outs[o.name + "_ratio"] = ratio;
+      // An acceleration magnitude has no velocity ratio (kin::output_derivative gives NaN).
+      const bool has_ratio = o.kind != kin::OutputKind::point_acceleration;
+      outs[o.name + "_ratio"] = has_ratio ? nlohmann::json(ratio) : nlohmann::json(nullptr);
       row.push_back(io::fixed(shown_output(o, p.outputs[k].value), 4));
-      row.push_back(io::fixed(ratio, 5));
+      row.push_back(has_ratio ? io::fixed(ratio, 5) : "-");
     }
     pj["outputs"] = outs;
     if (p.transmission_angle) {
@@ -298,6 +301,7 @@ io::Report build_report(const mechanism::Mechanism& mech, const KinAnalysis& a) 
         members.push_back({{"link", tf.name}, {"axial_force_N", tf.axial_force}, {"state", tf.tension() ? "tension" : "compression"}});
       pj["two_force_members"] = members;
       if (!p.forces->determinate) pj["reactions_note"] = "redundant constraints: reactions are statically indeterminate (minimum-norm values shown)";
+      add_force_details_json(pj, m, *p.forces, driver, angular(mech, driver));
     }
     t.add_row(std::move(row));
     positions.push_back(std::move(pj));
@@ -348,6 +352,7 @@ io::Report build_report(const mechanism::Mechanism& mech, const KinAnalysis& a) 
         r.add_row({c.name, c.kind, m.body_name(c.body), io::fixed(c.force.x(), 3), io::fixed(c.force.y(), 3), io::fixed(c.force.norm(), 3)});
       rep.tables.push_back(std::move(r));
       if (auto elements = element_reaction_table(*p.forces)) rep.tables.push_back(std::move(*elements));
+      add_force_details_report(rep, m, *p.forces, driver, angular(mech, driver));
       if (!p.forces->two_force_members.empty()) {
         io::Table tf{"Two-force members", {"link", "axial force [N]", "state"}, {}};
         for (const kin::TwoForceMember& x : p.forces->two_force_members)

@@ -20,4 +20,17 @@ nlohmann::json reaction_json(const kin::Model& model, const kin::ConstraintReact
 /// no constraint names a value.
 std::optional<io::Table> element_reaction_table(const kin::ForceAnalysis& forces);
 
+/// Adds to a position's JSON what the kinetostatics found beyond the reactions: the solved
+/// `unknown_loads` (inverse kinetostatics) and, with friction, `friction` (joints, ideal effort,
+/// `forward` and `reverse` senses with effort, efficiency, self-locking and the wedging
+/// coefficients) and `force_warnings`. Efforts that are not finite (a self-locking sense) are
+/// written as null, here and in the position's driving effort keys.
+void add_force_details_json(nlohmann::json& position, const kin::Model& model, const kin::ForceAnalysis& forces,
+                            int driver, bool angular);
+
+/// The same for the text report of a single position: tables "Friction" and "Unknown loads",
+/// notes on both senses of motion, and the warnings.
+void add_force_details_report(io::Report& report, const kin::Model& model, const kin::ForceAnalysis& forces, int driver,
+                              bool angular);
+
 }  // namespace gearkit::cli

@@ -75,8 +75,13 @@ void add_gear_options(io::po::options_description& desc) {
       ("x2", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 2 (default 0; ISO sign for a ring)")
       ("centre-distance", po::value<std::string>()->value_name("LEN"),
        "working centre distance, mm: the shift sum follows from it (with --x1: x2 = sum - x1)")
-      ("split", po::value<std::string>()->value_name("balanced|proportional|user"),
-       "split of the shift sum with --centre-distance (default balanced specific sliding; user with --x1)")
+      ("split", po::value<std::string>()->value_name("balanced|proportional|min-shift|user"),
+       "split of the shift sum with --centre-distance (default balanced specific sliding; min-shift: the smallest "
+       "shifts free of undercut; user with --x1)")
+      ("undercut-limit", po::value<std::string>()->value_name("iso|practical"),
+       "the undercut limit --split min-shift keeps: ISO x_min (default) or the practical (14 - z)/17 of DIN 3960 and "
+       "course notes")
+      ("radii", po::bool_switch(), "print the gear table in radii (r, r_w, r_b, r_a, r_f), as course notes do")
       ("internal", po::bool_switch(), "gear 2 is an internal gear (ring); z2 > z1")
       ("transverse", po::bool_switch(), "module and pressure angle are given in the transverse section")
       ("no-tip-shortening", po::bool_switch(), "keep d_a = d + 2 m (h_aP + x) even when k > 0")
@@ -152,15 +157,23 @@ void read_shift(const io::po::variables_map& vm, gg::GearPairInput& in) {
   if (given(vm, "split")) {
     if (!in.centre_distance) fail("split", "only applies with --centre-distance");
     const std::string s = text_of(vm, "split");
-    const std::map<std::string, gg::ShiftSplit> splits = {
-        {"balanced", gg::ShiftSplit::balanced_sliding}, {"proportional", gg::ShiftSplit::proportional}, {"user", gg::ShiftSplit::user_x1}};
+    const std::map<std::string, gg::ShiftSplit> splits = {{"balanced", gg::ShiftSplit::balanced_sliding},
+                                                          {"proportional", gg::ShiftSplit::proportional},
+                                                          {"min-shift", gg::ShiftSplit::min_shift},
+                                                          {"user", gg::ShiftSplit::user_x1}};
     const auto it = splits.find(s);
-    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional or user, found {}", io::quote(s)));
+    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional, min-shift or user, found {}", io::quote(s)));
     if (given(vm, "x1") && it->second != gg::ShiftSplit::user_x1) {
       fail("split", fmt::format("'{}' contradicts --x1 (a given x1 means the user split)", s));
     }
     if (!given(vm, "x1") && it->second == gg::ShiftSplit::user_x1) fail("split", "'user' needs --x1");
     in.split = it->second;
+  }
+  if (given(vm, "undercut-limit")) {
+    if (in.split != gg::ShiftSplit::min_shift) fail("undercut-limit", "only applies with --split min-shift");
+    const std::string s = text_of(vm, "undercut-limit");
+    if (s != "iso" && s != "practical") fail("undercut-limit", fmt::format("expected iso or practical, found {}", io::quote(s)));
+    in.undercut_limit = s == "iso" ? gg::UndercutLimit::iso : gg::UndercutLimit::practical;
   }
 }
 
@@ -196,6 +209,7 @@ void read_pins(const io::po::variables_map& vm, gg::GearPairInput& in) {
 }
 
 void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
+  o.radii = vm.count("radii") && vm["radii"].as<bool>();
   if (given(vm, "svg")) o.svg = text_of(vm, "svg");
   if (given(vm, "dxf")) o.dxf = text_of(vm, "dxf");
   if (given(vm, "draw")) {
