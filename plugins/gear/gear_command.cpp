@@ -35,7 +35,7 @@ namespace gg = gearkit::gear;
 namespace {
 
 constexpr std::string_view kUsage =
-    "gearkit gear [PAIR.yaml] --z1 N --z2 N --module LEN [--pressure-angle 20] [--helix-angle 0] "
+    "gearkit gear [PAIR.yaml] --z1 N --z2 N --module LEN [--ratio U] [--pressure-angle 20] [--helix-angle 0] "
     "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional|min-shift [--undercut-limit "
     "iso|practical]]] [--radii] [--internal] [--transverse] "
     "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
