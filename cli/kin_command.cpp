@@ -352,7 +352,7 @@ io::Report build_report(const mechanism::Mechanism& mech, const KinAnalysis& a) 
         r.add_row({c.name, c.kind, m.body_name(c.body), io::fixed(c.force.x(), 3), io::fixed(c.force.y(), 3), io::fixed(c.force.norm(), 3)});
       rep.tables.push_back(std::move(r));
       if (auto elements = element_reaction_table(*p.forces)) rep.tables.push_back(std::move(*elements));
-      add_force_details_report(rep, m, *p.forces, driver, angular(mech, driver));
+      add_force_details_report(rep, m, p, driver, angular(mech, driver));
       if (!p.forces->two_force_members.empty()) {
         io::Table tf{"Two-force members", {"link", "axial force [N]", "state"}, {}};
         for (const kin::TwoForceMember& x : p.forces->two_force_members)

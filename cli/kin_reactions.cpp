@@ -122,9 +122,42 @@ void add_force_details_json(nlohmann::json& position, const kin::Model& model, c
   position["friction"] = f;
 }
 
-void add_force_details_report(io::Report& report, const kin::Model& model, const kin::ForceAnalysis& forces, int driver,
+namespace {
+
+std::string finite_text(double v, int digits) { return std::isfinite(v) ? io::fixed(v, digits) : "-"; }
+
+// One table per link: every force on it, where it acts, and its moment about that point.
+void add_free_bodies(io::Report& report, const kin::Model& model, const KinPosition& position) {
+  kin::Data data(model);
+  data.q = position.q;
+  data.qd = position.qd;
+  data.qdd = position.qdd;
+  nlohmann::json all = nlohmann::json::array();
+  for (const kin::FreeBody& b : kin::free_bodies(model, data, *position.forces)) {
+    io::Table t{"Free body: " + b.name, {"force", "kind", "x [mm]", "y [mm]", "Fx [N]", "Fy [N]", "M [N m]", "N [N]", "friction [N or N m]"}, {}};
+    nlohmann::json forces = nlohmann::json::array();
+    for (const kin::BodyForce& f : b.forces) {
+      t.add_row({f.source, f.kind, io::fixed(f.at.x() * 1000, 3), io::fixed(f.at.y() * 1000, 3), io::fixed(f.force.x(), 4),
+                 io::fixed(f.force.y(), 4), io::fixed(f.moment, 5), finite_text(f.normal, 4), finite_text(f.friction, 4)});
+      nlohmann::json j = {{"from", f.source}, {"kind", f.kind}, {"at_mm", {f.at.x() * 1000, f.at.y() * 1000}},
+                          {"force_N", {f.force.x(), f.force.y()}}, {"moment_Nm", f.moment}};
+      if (std::isfinite(f.normal)) j["normal_N"] = f.normal;
+      if (std::isfinite(f.friction)) j["friction"] = f.friction;
+      forces.push_back(j);
+    }
+    report.tables.push_back(std::move(t));
+    all.push_back({{"link", b.name}, {"forces", forces}});
+  }
+  report.json["free_bodies"] = all;
+}
+
+}  // namespace
+
+void add_force_details_report(io::Report& report, const kin::Model& model, const KinPosition& position, int driver,
                               bool angular) {
+  const kin::ForceAnalysis& forces = *position.forces;
   report.warnings.insert(report.warnings.end(), forces.warnings.begin(), forces.warnings.end());
+  add_free_bodies(report, model, position);
   if (!forces.unknown_loads.empty()) {
     io::Table t{"Unknown loads (from the given driving effort)", {"load", "value", "unit"}, {}};
     for (const kin::UnknownLoad& u : forces.unknown_loads) t.add_row({u.name, io::fixed(u.value, 4), u.torque ? "N m" : "N"});

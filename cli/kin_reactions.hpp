@@ -2,6 +2,8 @@
 // `gearkit kin`: how the reactions of the constraints are reported. Joints give a force on
 // their first link; elements add the quantities they name (Constraint::reaction), such as a gear
 // mesh's tooth forces or a cam's contact force.
+#include "kin_analysis.hpp"
+
 #include <gearkit/io/report.hpp>
 #include <gearkit/kin/kinetostatics.hpp>
 #include <gearkit/kin/model.hpp>
@@ -28,9 +30,10 @@ std::optional<io::Table> element_reaction_table(const kin::ForceAnalysis& forces
 void add_force_details_json(nlohmann::json& position, const kin::Model& model, const kin::ForceAnalysis& forces,
                             int driver, bool angular);
 
-/// The same for the text report of a single position: tables "Friction" and "Unknown loads",
-/// notes on both senses of motion, and the warnings.
-void add_force_details_report(io::Report& report, const kin::Model& model, const kin::ForceAnalysis& forces, int driver,
+/// The same for the report of a single position (with loads): tables "Unknown loads" and
+/// "Friction", notes on both senses of motion, the warnings, and the free-body diagram of each
+/// link (a table per link; JSON `free_bodies`).
+void add_force_details_report(io::Report& report, const kin::Model& model, const KinPosition& position, int driver,
                               bool angular);
 
 }  // namespace gearkit::cli

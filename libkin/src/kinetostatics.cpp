@@ -314,4 +314,117 @@ ForceAnalysis solve_forces(const Model& model, Data& data, int driver) {
   return f;
 }
 
+namespace {
+
+// The generalised force -Phi_q^T lambda of constraint k on each of its bodies, about each body's
+// frame origin: (Fx, Fy, M).
+std::vector<Eigen::Vector3d> constraint_forces(const Model& model, const Data& data, int k, const Eigen::VectorXd& lambda) {
+  const ModelConstraint& mc = model.constraints()[static_cast<std::size_t>(k)];
+  const std::vector<int> bodies = mc.constraint->bodies();
+  std::vector<BodyState> states(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i] != kGround) {
+      states[i].r = data.q.segment<2>(3 * bodies[i]);
+      states[i].set_theta(data.q(3 * bodies[i] + 2));
+      states[i].r_dot = data.qd.segment<2>(3 * bodies[i]);
+      states[i].omega = data.qd(3 * bodies[i] + 2);
+    }
+  const int m = mc.constraint->equations(), columns = 3 * static_cast<int>(bodies.size());
+  Eigen::VectorXd phi(m), phi_t(m), gamma(m);
+  Eigen::MatrixXd phi_q(m, columns);
+  ConstraintOutput out{phi, phi_q, phi_t, gamma};
+  mc.constraint->evaluate(ConstraintInput{states, data.t, 0.0}, out);
+  const Eigen::VectorXd generalised = -phi_q.transpose() * lambda.segment(mc.first_row, m);
+  std::vector<Eigen::Vector3d> per_body;
+  for (std::size_t i = 0; i < bodies.size(); ++i) per_body.push_back(generalised.segment<3>(3 * static_cast<int>(i)));
+  return per_body;
+}
+
+Eigen::Vector2d origin_of(const Data& data, int body) { return data.q.segment<2>(3 * body); }
+
+// The forces of every constraint on the free bodies: the joint's reaction at its point (its
+// opposite on the second body), or the generalised force about the frame origin.
+void add_constraint_forces(const Model& model, const Data& data, const ForceAnalysis& f, std::vector<FreeBody>& fb) {
+  std::map<int, const JointFrictionForce*> friction;
+  if (f.friction)
+    for (const JointFrictionForce& j : f.friction->joints) friction[j.constraint] = &j;
+  std::map<int, const ConstraintReaction*> reactions;
+  for (const ConstraintReaction& r : f.reactions) reactions[r.constraint] = &r;
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    const ModelConstraint& mc = model.constraints()[k];
+    const std::vector<int> bodies = mc.constraint->bodies();
+    const auto r = reactions.find(static_cast<int>(k));
+    const std::string kind = mc.constraint->is_driver() ? "driver" : mc.constraint->kind();
+    if (r != reactions.end() && r->second->at && bodies.size() == 2) {
+      const auto fr = friction.find(static_cast<int>(k));
+      for (int side = 0; side < 2; ++side) {
+        if (bodies[static_cast<std::size_t>(side)] == kGround) continue;
+        const double s = side == 0 ? 1.0 : -1.0;
+        BodyForce bf{mc.name, kind, *r->second->at, s * r->second->force, s * r->second->moment};
+        if (fr != friction.end()) {
+          bf.normal = fr->second->normal;
+          bf.friction = s * fr->second->friction;
+        }
+        fb[static_cast<std::size_t>(bodies[static_cast<std::size_t>(side)])].forces.push_back(bf);
+      }
+      continue;
+    }
+    const std::vector<Eigen::Vector3d> g = constraint_forces(model, data, static_cast<int>(k), f.lambda);
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      if (bodies[i] != kGround)
+        fb[static_cast<std::size_t>(bodies[i])].forces.push_back({mc.name, kind, origin_of(data, bodies[i]), g[i].head<2>(), g[i](2)});
+  }
+}
+
+// Weights, inertia forces and the loads (with the solved magnitudes of unknown ones).
+void add_load_forces(const Model& model, const Data& data, const ForceAnalysis& f, std::vector<FreeBody>& fb) {
+  for (std::size_t i = 0; i < model.bodies().size(); ++i) {
+    const Body& b = model.bodies()[i];
+    const BodyPoint com{static_cast<int>(i), b.centre_of_mass};
+    const Eigen::Vector2d at = point_position(data, com);
+    if (b.mass > 0.0 && model.gravity().squaredNorm() > 0.0) fb[i].forces.push_back({"weight", "weight", at, b.mass * model.gravity(), 0.0});
+    const Eigen::Vector2d inertia = -b.mass * point_acceleration(data, com);
+    const double couple = -b.inertia * data.qdd(3 * static_cast<int>(i) + 2);
+    if (inertia.squaredNorm() > 0.0 || couple != 0.0) fb[i].forces.push_back({"inertia", "inertia", at, inertia, couple});
+  }
+  std::map<std::pair<bool, int>, double> solved;
+  for (const UnknownLoad& u : f.unknown_loads) solved[{u.torque, u.index}] = u.value;
+  for (std::size_t i = 0; i < model.forces().size(); ++i) {
+    const PointForce& pf = model.forces()[i];
+    if (pf.at.body == kGround) continue;
+    const auto u = solved.find({false, static_cast<int>(i)});
+    const Eigen::Vector2d force = pf.unknown ? (u == solved.end() ? 0.0 : u->second) * pf.force.normalized() : pf.force;
+    fb[static_cast<std::size_t>(pf.at.body)].forces.push_back({pf.name, "force", point_position(data, pf.at), force, 0.0});
+  }
+  for (std::size_t i = 0; i < model.torques().size(); ++i) {
+    const BodyTorque& t = model.torques()[i];
+    if (t.body == kGround) continue;
+    const auto u = solved.find({true, static_cast<int>(i)});
+    const double torque = t.unknown ? (u == solved.end() ? 0.0 : u->second) : t.torque;
+    fb[static_cast<std::size_t>(t.body)].forces.push_back({t.name, "torque", origin_of(data, t.body), Eigen::Vector2d::Zero(), torque});
+  }
+  for (const Spring& s : model.springs()) {
+    const Eigen::Vector2d pa = point_position(data, s.a), pb = point_position(data, s.b);
+    const double length = (pb - pa).norm();
+    if (length == 0.0) continue;
+    const Eigen::Vector2d e = (pb - pa) / length;
+    const double tension = spring_tension(s, length);
+    if (s.a.body != kGround) fb[static_cast<std::size_t>(s.a.body)].forces.push_back({s.name, "spring", pa, tension * e, 0.0});
+    if (s.b.body != kGround) fb[static_cast<std::size_t>(s.b.body)].forces.push_back({s.name, "spring", pb, -tension * e, 0.0});
+  }
+}
+
+}  // namespace
+
+std::vector<FreeBody> free_bodies(const Model& model, const Data& data, const ForceAnalysis& forces) {
+  std::vector<FreeBody> fb(model.bodies().size());
+  for (std::size_t i = 0; i < fb.size(); ++i) {
+    fb[i].body = static_cast<int>(i);
+    fb[i].name = model.bodies()[i].name;
+  }
+  add_constraint_forces(model, data, forces, fb);
+  add_load_forces(model, data, forces, fb);
+  return fb;
+}
+
 }  // namespace gearkit::kin

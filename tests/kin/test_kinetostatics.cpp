@@ -124,6 +124,49 @@ TEST(Kinetostatics, UnknownLoadWithFriction) {
   EXPECT_NEAR(f.effort_virtual_power[0], E, 1e-8);
 }
 
+// Free-body diagrams: every moving body's forces (reactions, driver, weights, inertia, loads)
+// balance, forces and moments, on a four-bar with masses, accelerations, friction in every pin
+// and a load, and on the lifting platform (a load on the platform, two-force rod).
+TEST(Kinetostatics, FreeBodiesBalance) {
+  std::vector<Model> models;
+  Model m = testing::four_bar({0.04, 0.12, 0.08, 0.1}, 50 * kDeg, Motion{12.0, 30.0});
+  Model loaded;
+  loaded.ground() = m.ground();
+  for (Body b : m.bodies()) {
+    b.mass = 0.3;
+    b.inertia = 2e-4;
+    b.centre_of_mass = 0.5 * b.points.back().second;
+    loaded.add_body(b);
+  }
+  for (const ModelConstraint& c : m.constraints()) loaded.add_constraint(c.name, c.constraint);
+  loaded.set_driver(m.drivers()[0].constraint, DriverQuantity::angle, m.drivers()[0].value);
+  loaded.set_gravity({0, -9.81});
+  loaded.add_force({testing::at(loaded, 1, "B"), {5.0, -2.0}, "pull"});
+  for (const char* pin : {"O2", "A", "B", "O4"}) loaded.add_friction({*loaded.constraint_index(pin), 0.2, 0.006, 0.0});
+  models.push_back(loaded);
+  models.push_back(testing::lifting_platform(69.5 * kDeg));
+  for (const Model& model : models) {
+    Data data(model);
+    ASSERT_TRUE(solve_position(model, data, 0.0).converged);
+    ASSERT_TRUE(solve_velocity(model, data));
+    ASSERT_TRUE(solve_acceleration(model, data));
+    const ForceAnalysis f = solve_forces(model, data);
+    const std::vector<FreeBody> fb = free_bodies(model, data, f);
+    ASSERT_EQ(fb.size(), model.bodies().size());
+    for (const FreeBody& b : fb) {
+      Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+      double moment = 0.0, scale = 1.0;
+      for (const BodyForce& x : b.forces) {
+        sum += x.force;
+        moment += x.moment + cross(x.at, x.force);  // about the ground origin
+        scale = std::max(scale, x.force.norm());
+      }
+      EXPECT_LT(sum.norm(), 1e-9 * scale) << b.name;
+      EXPECT_LT(std::abs(moment), 1e-9 * scale) << b.name;
+    }
+  }
+}
+
 // A revolute's reaction balances the forces on a free body: on the massless crank, the force
 // from the ground plus the force from the coupler plus the driving torque's zero resultant.
 TEST(Kinetostatics, ReactionsBalanceEveryBody) {

@@ -19,6 +19,7 @@
 // friction, solved by Newton's method with it (impending motion in the forward sense).
 #include <gearkit/kin/data.hpp>
 #include <gearkit/kin/friction.hpp>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,32 @@ struct ForceAnalysis {
   std::optional<FrictionAnalysis> friction;  ///< when the model has joints with friction
   std::vector<std::string> warnings;         ///< friction: open contacts, self-locking, ...
 };
+
+/// One force on a free body: where it acts, the force and the moment about that point.
+struct BodyForce {
+  std::string source;  ///< the joint, element, driver or load it comes from; "weight", "inertia"
+  std::string kind;    ///< "revolute", "contact", ..., "driver", "weight", "inertia", "force", "torque", "spring"
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();     ///< [m], ground frame
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< [N] on this body
+  double moment = 0.0;                              ///< [N m] about `at`, ccw
+  /// Joints with friction: the normal force and the friction force (or couple) on this body,
+  /// signed along the joint's axis (NaN otherwise).
+  double normal = std::numeric_limits<double>::quiet_NaN();
+  double friction = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// The free-body diagram of one moving body: every force on it, which balance (d'Alembert's
+/// inertia forces included).
+struct FreeBody {
+  int body = 0;
+  std::string name;
+  std::vector<BodyForce> forces;
+};
+
+/// The free-body diagrams of every moving body from a force analysis at the same state: joint
+/// reactions (normal and friction parts named), the drivers' efforts, elements (their generalised
+/// forces, about the body's frame origin), weights, inertia forces and the loads.
+std::vector<FreeBody> free_bodies(const Model& model, const Data& data, const ForceAnalysis& forces);
 
 /// Generalised applied and inertia forces Q* at the current state (unknown loads left out).
 Eigen::VectorXd applied_forces(const Model& model, const Data& data);
