@@ -63,7 +63,7 @@ void describe_position(const mechanism::Mechanism& mech, const std::optional<kin
   }
   if (four_bar) p.transmission_angle = kin::transmission_angle(*four_bar, data);
   else p.transmission_angle.reset();
-  if (mech.model.has_loads()) p.forces = kin::solve_forces(mech.model, data);
+  if (mech.model.has_loads()) p.forces = kin::solve_forces(mech.model, data, driver);
   else p.forces.reset();
 }
 

@@ -82,10 +82,14 @@ KinRows::KinRows(const mechanism::Mechanism& mech, int driver, bool transmission
   for (int order = 0; order < 3; ++order)
     for (int i = 0; i < m.coordinates(); ++i)
       coordinate_keys_[order].emplace_back(m.bodies()[static_cast<std::size_t>(i / 3)].name + "." + kCoordinateNames[order][i % 3]);
-  for (const kin::Output& o : mech.outputs)
-    output_keys_.push_back({io::JsonKey(o.name + "_" + output_unit(o)), io::JsonKey(o.name + (o.angular() ? "_rate_rad_s" : "_rate_mm_s")),
-                            io::JsonKey(o.name + (o.angular() ? "_acceleration_rad_s2" : "_acceleration_mm_s2")),
-                            io::JsonKey(o.name + "_ratio")});
+  for (const kin::Output& o : mech.outputs) {
+    // A speed output has no acceleration key, an acceleration magnitude neither rate nor ratio.
+    const kin::OutputUnits u = kin::output_units(o);
+    output_keys_.push_back({io::JsonKey(o.name + "_" + u.value), io::JsonKey(*u.rate ? o.name + "_rate_" + u.rate : ""),
+                            io::JsonKey(*u.acceleration ? o.name + "_acceleration_" + u.acceleration : ""),
+                            io::JsonKey(o.name + "_ratio"), *u.rate != 0, *u.acceleration != 0,
+                            o.kind != kin::OutputKind::point_acceleration});
+  }
   input_key_ = io::JsonKey(input_key(mech, driver));
   effort_key_ = io::JsonKey(effort_key(mech, driver));
   lagrange_key_ = io::JsonKey(angular(mech, driver) ? "driving_torque_lagrange_Nm" : "driving_force_lagrange_N");
@@ -105,7 +109,12 @@ void KinRows::cells(const KinPosition& p, std::vector<std::string>& row) const {
     if (!output_in_table_[k]) continue;
     const kin::Output& o = mech_.outputs[k];
     cell(shown_output(o, p.outputs[k].value), 4);
-    cell(shown_ratio(mech_, driver_, o, p.output_ratios[k]), 5);
+    if (output_keys_[k].has_ratio) {
+      cell(shown_ratio(mech_, driver_, o, p.output_ratios[k]), 5);
+    } else {
+      if (n == row.size()) row.emplace_back();
+      row[n++] = "-";
+    }
   }
   if (p.transmission_angle) cell(*p.transmission_angle * kRadToDeg, 2);
   if (p.forces) cell(p.forces->effort_virtual_power[static_cast<std::size_t>(driver_)], 4);
@@ -123,10 +132,15 @@ void KinRows::coordinates_json(const Eigen::VectorXd& v, int order, io::JsonWrit
 
 void KinRows::forces_json(const KinPosition& p, io::JsonWriter& w) const {
   const kin::ForceAnalysis& f = *p.forces;
+  // A sense that locks by friction has no finite effort: null, and no "not finite" warning.
+  const auto effort = [&](double v) {
+    if (std::isfinite(v) || !f.friction) w.value(v);
+    else w.null();
+  };
   w.key(effort_key_);
-  w.value(f.effort_virtual_power[static_cast<std::size_t>(driver_)]);
+  effort(f.effort_virtual_power[static_cast<std::size_t>(driver_)]);
   w.key(lagrange_key_);
-  w.value(f.effort_lagrange[static_cast<std::size_t>(driver_)]);
+  effort(f.effort_lagrange[static_cast<std::size_t>(driver_)]);
   w.key("reactions");
   w.begin_array();
   for (const kin::ConstraintReaction& r : f.reactions) write_reaction(w, mech_.model, r);
@@ -148,6 +162,13 @@ void KinRows::forces_json(const KinPosition& p, io::JsonWriter& w) const {
     w.key("reactions_note");
     w.value("redundant constraints: reactions are statically indeterminate (minimum-norm values shown)");
   }
+  if (f.friction || !f.unknown_loads.empty() || !f.warnings.empty()) {
+    const nlohmann::json details = force_details_json(mech_.model, f, driver_, angular(mech_, driver_));
+    for (const auto& [key, value] : details.items()) {
+      w.key(key);
+      w.raw_value(value.dump());
+    }
+  }
 }
 
 void KinRows::json(const KinPosition& p, io::JsonWriter& w) const {
@@ -168,12 +189,17 @@ void KinRows::json(const KinPosition& p, io::JsonWriter& w) const {
     const double rate_scale = o.angular() ? 1.0 : 1000.0;
     w.key(output_keys_[k].value);
     w.value(shown_output(o, p.outputs[k].value));
-    w.key(output_keys_[k].rate);
-    w.value(p.outputs[k].rate * rate_scale);
-    w.key(output_keys_[k].acceleration);
-    w.value(p.outputs[k].acceleration * rate_scale);
+    if (output_keys_[k].has_rate) {
+      w.key(output_keys_[k].rate);
+      w.value(p.outputs[k].rate * rate_scale);
+    }
+    if (output_keys_[k].has_acceleration) {
+      w.key(output_keys_[k].acceleration);
+      w.value(p.outputs[k].acceleration * rate_scale);
+    }
     w.key(output_keys_[k].ratio);
-    w.value(shown_ratio(mech_, driver_, o, p.output_ratios[k]));
+    if (output_keys_[k].has_ratio) w.value(shown_ratio(mech_, driver_, o, p.output_ratios[k]));
+    else w.null();
   }
   w.end_object();
   if (p.transmission_angle) {
@@ -245,6 +271,7 @@ void reactions_section(const mechanism::Mechanism& mech, const KinPosition& p, i
   const bool ang = angular(mech, driver);
   rep.notes.push_back(fmt::format("Driving {}: {:.4f} {} by virtual power, {:.4f} {} by Lagrange multipliers",
                                   ang ? "torque" : "force", vp, ang ? "N m" : "N", lg, ang ? "N m" : "N"));
+  add_force_details_report(rep, m, p, driver, ang);
 }
 
 void instant_centres_section(const mechanism::Mechanism& mech, const KinAnalysis& a, io::Report& rep) {

@@ -39,6 +39,7 @@ class KinRows {
   std::vector<io::JsonKey> coordinate_keys_[3];  // per coordinate: "crank.x_mm", "crank.vx_mm_s"...
   struct OutputKeys {
     io::JsonKey value, rate, acceleration, ratio;
+    bool has_rate, has_acceleration, has_ratio;
   };
   std::vector<OutputKeys> output_keys_;
   io::JsonKey input_key_{""}, effort_key_{""}, lagrange_key_{""};

@@ -22,7 +22,7 @@ inline std::string input_unit(const mechanism::Mechanism& mech, int driver) { re
 inline std::string input_key(const mechanism::Mechanism& mech, int driver) { return "input_" + input_unit(mech, driver); }
 
 inline double shown_output(const kin::Output& o, double v) { return o.angular() ? v * kRadToDeg : v * 1000.0; }
-inline std::string output_unit(const kin::Output& o) { return o.angular() ? "deg" : "mm"; }
+inline std::string output_unit(const kin::Output& o) { return kin::output_units(o).value; }
 
 /// Velocity ratios are shown per rad or per mm of input, in rad or mm of output.
 inline std::string ratio_unit(const mechanism::Mechanism& mech, int driver, const kin::Output& o) {

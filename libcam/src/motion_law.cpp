@@ -127,6 +127,25 @@ LawValue evaluate(Law law, double u) {
   return {};
 }
 
+std::optional<LawFormula> law_formula(Law law, std::string_view u_text) {
+  const std::string u = "(" + std::string(u_text) + ")";
+  const auto power = [&u](int k) { return u + "^" + std::to_string(k); };
+  switch (law) {
+    case Law::uniform_velocity: return LawFormula{u, "1"};
+    case Law::simple_harmonic: return LawFormula{"(1-cos(Pi*" + u + "))/2", "Pi/2*sin(Pi*" + u + ")"};
+    case Law::cycloidal: return LawFormula{u + "-sin(2*Pi*" + u + ")/(2*Pi)", "1-cos(2*Pi*" + u + ")"};
+    case Law::polynomial_345:
+      return LawFormula{"10*" + power(3) + "-15*" + power(4) + "+6*" + power(5), "30*" + power(2) + "-60*" + power(3) + "+30*" + power(4)};
+    case Law::polynomial_4567:
+      return LawFormula{"35*" + power(4) + "-84*" + power(5) + "+70*" + power(6) + "-20*" + power(7),
+                        "140*" + power(3) + "-420*" + power(4) + "+420*" + power(5) + "-140*" + power(6)};
+    case Law::parabolic:
+    case Law::modified_trapezoid:
+    case Law::modified_sine: return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 std::string_view name_of(Law law) {
   for (const NamedLaw& n : kNames)
     if (n.law == law) return n.name;

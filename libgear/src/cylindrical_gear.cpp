@@ -49,6 +49,13 @@ double min_shift_no_undercut(double d, double m_n, double alpha_t, const Rack& r
   return rack.h_fP - rack.rho_fP * (1.0 - std::sin(rack.alpha_P)) - 0.5 * (d / m_n) * s * s;
 }
 
+double practical_min_shift(double z_n, const Rack& rack) {
+  const double s = std::sin(rack.alpha_P);
+  const double z_g = std::round(2.0 * rack.h_aP / (s * s));
+  const double z_g_practical = std::round(5.0 * z_g / 6.0);
+  return rack.h_aP * (z_g_practical - z_n) / z_g;
+}
+
 double form_roll_length(int z, double m_n, double beta, double x, const Rack& rack) {
   const double alpha_t = transverse_pressure_angle(rack.alpha_P, beta);
   return form_roll_length(base_diameter(reference_diameter(z, m_n, beta), alpha_t), alpha_t, m_n, x, rack);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -30,9 +31,12 @@ const char* to_string(ShiftSplit split) {
     case ShiftSplit::user_x1: return "user";
     case ShiftSplit::balanced_sliding: return "balanced";
     case ShiftSplit::proportional: return "proportional";
+    case ShiftSplit::min_shift: return "min-shift";
   }
   return "user";
 }
+
+const char* to_string(UndercutLimit limit) { return limit == UndercutLimit::iso ? "ISO" : "practical"; }
 
 double reference_centre_distance(int z1, int z2, double m_t) { return 0.5 * m_t * (z1 + z2); }
 
@@ -280,6 +284,23 @@ struct Work {
   BacklashInput bl{};
 };
 
+// The undercut limit of gear i (external) by the chosen criterion; -inf for a ring.
+double undercut_limit_of(const Basics& b, int i, UndercutLimit limit) {
+  const int z = i == 0 ? b.Z1 : b.Z2;
+  if (z < 0) return -std::numeric_limits<double>::infinity();
+  if (limit == UndercutLimit::iso) return min_shift_no_undercut(i == 0 ? b.d1 : b.d2, b.m_n, b.alpha_t, b.rack);
+  const double z_n = b.beta == 0.0 ? z : virtual_number_of_teeth(z, b.beta, b.alpha_n);
+  return practical_min_shift(z_n, b.rack);
+}
+
+// The split with the least max |x_i| that keeps x_i >= the undercut limits: x1 = sum/2
+// clamped to [x_min1, sum - x_min2]; NaN when that interval is empty.
+double min_shift_x1(const Basics& b, double sum_x, UndercutLimit limit) {
+  const double lo = undercut_limit_of(b, 0, limit), hi = sum_x - undercut_limit_of(b, 1, limit);
+  if (lo > hi + 1e-12) return std::numeric_limits<double>::quiet_NaN();
+  return std::clamp(0.5 * sum_x, lo, std::max(lo, hi));
+}
+
 // Shifts and working pressure angle for a given centre distance (the split of the shift sum).
 void mount_at_centre_distance(Work& w, GearPairResult& r) {
   const GearPairInput& in = w.in;
@@ -308,6 +329,14 @@ void mount_at_centre_distance(Work& w, GearPairResult& r) {
   switch (in.split) {
     case ShiftSplit::user_x1: x1 = in.x1; break;
     case ShiftSplit::proportional: x1 = p.sum_x * b.Z1 / (b.Z1 + b.Z2); break;
+    case ShiftSplit::min_shift:
+      x1 = min_shift_x1(b, p.sum_x, in.undercut_limit);
+      if (std::isnan(x1)) {
+        x1 = undercut_limit_of(b, 0, in.undercut_limit);
+        r.warnings.push_back(fmt::format("no split of x1 + x2 = {:.4f} keeps both gears above the {} undercut limit; gear 1 "
+                                         "gets its limit x1 = {:.4f}", p.sum_x, to_string(in.undercut_limit), x1));
+      }
+      break;
     case ShiftSplit::balanced_sliding:
       x1 = balanced_x1(b, p.sum_x, k_used, a, alpha_wt);
       if (std::isnan(x1)) {
@@ -463,11 +492,13 @@ void gear_measurements(Work& w, int i, GearResult& g, std::vector<std::string>& 
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (!ring) {
     g.x_min = min_shift_no_undercut(d[i], b.m_n, b.alpha_t, b.rack);
+    g.x_min_practical = practical_min_shift(g.z_n, b.rack);
     const double rho_Ff = form_roll_length(d_b[i], b.alpha_t, b.m_n, g.x, b.rack);
     w.rho_Ff[i] = std::max(0.0, rho_Ff);
     g.d_Ff = rho_Ff > 0.0 ? 2.0 * std::hypot(0.5 * g.d_b, rho_Ff) : g.d_b;
   } else {
     g.x_min = nan;
+    g.x_min_practical = nan;
     g.d_Ff = nan;
   }
   const ToothData actual = tooth_data(i, b, s_t[i] + A_sn[i] / std::cos(b.beta));
@@ -545,7 +576,15 @@ void tooth_checks(const Work& w, GearPairResult& r) {
   for (int i = 0; i < 2; ++i) {
     const GearResult& g = r.gear[i];
     if (!g.internal && g.x < g.x_min - 1e-9) {
-      warn(fmt::format("gear {}: undercut (x = {:.4f} < x_min = {:.4f})", i + 1, g.x, g.x_min));
+      // The two criteria answer differently between x'_min and x_min: say which says what.
+      if (g.x >= g.x_min_practical - 1e-9)
+        warn(fmt::format("gear {}: undercut by ISO (x = {:.4f} < x_min = {:.4f}: the rack's tip rounding cuts into the "
+                         "involute), but within the practical limit x'_min = {:.4f} of DIN 3960 and course notes "
+                         "((14 - z)/17 at 20 deg), which accepts this slight undercut",
+                         i + 1, g.x, g.x_min, g.x_min_practical));
+      else
+        warn(fmt::format("gear {}: undercut (x = {:.4f} < x_min = {:.4f}, and below the practical limit x'_min = {:.4f})",
+                         i + 1, g.x, g.x_min, g.x_min_practical));
     }
     if (std::isnan(g.s_an)) {
       warn(fmt::format("gear {}: tip circle inside the base circle, the tip is not involute", i + 1));

@@ -202,6 +202,11 @@ void JsonWriter::value(std::string_view s) {
   append_json_string(*out_, s);
 }
 
+void JsonWriter::raw_value(std::string_view json) {
+  separate();
+  *out_ += json;
+}
+
 void JsonWriter::null() {
   separate();
   *out_ += "null";

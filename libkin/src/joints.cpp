@@ -1,5 +1,7 @@
 #include <gearkit/kin/joints.hpp>
 
+#include <stdexcept>
+
 namespace gearkit::kin {
 
 Constraint::~Constraint() = default;
@@ -70,6 +72,26 @@ PinInSlot::PinInSlot(BodyPoint pin, BodyPoint slot, Eigen::Vector2d axis_local)
 
 void PinInSlot::evaluate(const ConstraintInput& in, ConstraintOutput& out) const {
   projection_row(in, pin_.local, slot_.local, perp(axis_), 0, out);
+}
+
+Contact::Contact(BodyPoint circle, double radius, BodyPoint line, Eigen::Vector2d axis_local, int side)
+    : circle_(circle), line_(line), axis_(axis_local.normalized()), radius_(radius), side_(side) {
+  if (!(radius >= 0.0)) throw std::invalid_argument("contact radius must be >= 0");
+  if (side != 1 && side != -1) throw std::invalid_argument("contact side must be +1 or -1");
+}
+
+void Contact::evaluate(const ConstraintInput& in, ConstraintOutput& out) const {
+  // side n.(C - Q) - r: the projection row with the normal turned to the circle's side.
+  projection_row(in, circle_.local, line_.local, static_cast<double>(side_) * perp(axis_), 0, out);
+  out.phi(0) -= radius_;
+}
+
+Eigen::Vector2d Contact::normal(const BodyState& line) const {
+  return static_cast<double>(side_) * line.rotated(perp(axis_));
+}
+
+Eigen::Vector2d Contact::contact_point(const BodyState& circle, const BodyState& line) const {
+  return circle.r + circle.rotated(circle_.local) - radius_ * normal(line);
 }
 
 void AngleDriver::evaluate(const ConstraintInput& in, ConstraintOutput& out) const {

@@ -48,6 +48,30 @@ void Model::set_driver(int constraint, DriverQuantity quantity, double value) {
   throw std::invalid_argument("constraint " + std::to_string(constraint) + " is not a driver");
 }
 
+void Model::add_friction(JointFriction friction) {
+  if (friction.constraint < 0 || friction.constraint >= static_cast<int>(constraints_.size()))
+    throw std::invalid_argument("friction names constraint " + std::to_string(friction.constraint) + " of " +
+                                std::to_string(constraints_.size()));
+  const ModelConstraint& c = constraints_[static_cast<std::size_t>(friction.constraint)];
+  const std::string kind = c.constraint->kind();
+  if (kind != "revolute" && kind != "prismatic" && kind != "pin_in_slot" && kind != "contact")
+    throw std::invalid_argument("friction on '" + c.name + "' (" + kind +
+                                "): only revolute, prismatic, pin_in_slot and contact joints take friction");
+  for (const JointFriction& f : frictions_)
+    if (f.constraint == friction.constraint) throw std::invalid_argument("joint '" + c.name + "' already has friction");
+  if (!(friction.mu >= 0.0)) throw std::invalid_argument("friction coefficient of '" + c.name + "' must be >= 0");
+  if (kind == "revolute" && !(friction.radius > 0.0))
+    throw std::invalid_argument("friction in revolute '" + c.name + "' needs a journal radius > 0");
+  if (!(friction.length >= 0.0)) throw std::invalid_argument("bearing length of '" + c.name + "' must be >= 0");
+  frictions_.push_back(friction);
+}
+
+void Model::set_driver_effort(int driver, double effort) {
+  if (driver < 0 || driver >= static_cast<int>(drivers_.size()))
+    throw std::invalid_argument("driver " + std::to_string(driver) + " out of range");
+  drivers_[static_cast<std::size_t>(driver)].effort = effort;
+}
+
 std::optional<int> Model::body_index(const std::string& name) const {
   if (name == ground_.name) return kGround;
   const auto found = body_by_name_.find(name);
@@ -72,7 +96,7 @@ Eigen::Vector2d Model::point_position(const Eigen::VectorXd& q, const BodyPoint&
 }
 
 bool Model::has_loads() const {
-  if (!forces_.empty() || !torques_.empty() || !springs_.empty()) return true;
+  if (!forces_.empty() || !torques_.empty() || !springs_.empty() || !frictions_.empty()) return true;
   for (const Body& b : bodies_)
     if (b.mass > 0.0 || b.inertia > 0.0) return true;
   return false;

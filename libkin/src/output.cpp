@@ -3,6 +3,8 @@
 #include <gearkit/kin/solve.hpp>
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace gearkit::kin {
@@ -56,7 +58,39 @@ double dot_body(const Eigen::Matrix<double, 1, 6>& jac, int slot, int body, cons
   return jac.segment<3>(3 * slot).dot(v.segment<3>(3 * body));
 }
 
+// The point's value, rate and acceleration minus those of `from` (when given).
+struct PointMotion {
+  Eigen::Vector2d r, v, a;
+};
+PointMotion relative_motion(const Data& data, const Output& output) {
+  PointMotion m{point_position(data, output.point), point_velocity(data, output.point), point_acceleration(data, output.point)};
+  if (output.from) {
+    m.r -= point_position(data, *output.from);
+    m.v -= point_velocity(data, *output.from);
+    m.a -= point_acceleration(data, *output.from);
+  }
+  return m;
+}
+
+// dP/d(input) of a body point for the coordinate change dq.
+Eigen::Vector2d point_derivative(const Data& data, const BodyPoint& p, const Eigen::VectorXd& dq) {
+  if (p.body == kGround) return Eigen::Vector2d::Zero();
+  const int k = 3 * p.body;
+  return dq.segment<2>(k) + dq(k + 2) * perp(rotate(data.q(k + 2), p.local));
+}
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 }  // namespace
+
+OutputUnits output_units(const Output& output) {
+  switch (output.kind) {
+    case OutputKind::body_angle: return {"deg", "rad_s", "rad_s2"};
+    case OutputKind::point_speed: return {"mm_s", "mm_s2", ""};
+    case OutputKind::point_acceleration: return {"mm_s2", "", ""};
+    default: return {"mm", "mm_s", "mm_s2"};
+  }
+}
 
 OutputValue evaluate_output(const Model& model, const Data& data, const Output& output) {
   check_data(model, data);
@@ -65,16 +99,30 @@ OutputValue evaluate_output(const Model& model, const Data& data, const Output& 
     case OutputKind::point_x:
     case OutputKind::point_y: {
       const int c = output.kind == OutputKind::point_x ? 0 : 1;
-      v.value = point_position(data, output.point)(c);
-      v.rate = point_velocity(data, output.point)(c);
-      v.acceleration = point_acceleration(data, output.point)(c);
+      const PointMotion m = relative_motion(data, output);
+      v.value = m.r(c);
+      v.rate = m.v(c);
+      v.acceleration = m.a(c);
       break;
     }
+    case OutputKind::point_speed: {
+      const Eigen::Vector2d vel = point_velocity(data, output.point);
+      v.value = vel.norm();
+      // d|v|/dt = v.a/|v| (the tangential acceleration); undefined where the point stops.
+      v.rate = v.value > 0.0 ? vel.dot(point_acceleration(data, output.point)) / v.value : kNaN;
+      v.acceleration = kNaN;
+      break;
+    }
+    case OutputKind::point_acceleration:
+      v.value = point_acceleration(data, output.point).norm();
+      v.rate = v.acceleration = kNaN;
+      break;
     case OutputKind::body_angle: {
       auto angle = [&](const Eigen::VectorXd& x, int body) { return body == kGround ? 0.0 : x(3 * body + 2); };
-      v.value = angle(data.q, output.body) - angle(data.q, output.reference);
-      v.rate = angle(data.qd, output.body) - angle(data.qd, output.reference);
-      v.acceleration = angle(data.qdd, output.body) - angle(data.qdd, output.reference);
+      const double s = output.sense;
+      v.value = s * (angle(data.q, output.body) - angle(data.q, output.reference) + output.offset - output.zero);
+      v.rate = s * (angle(data.qd, output.body) - angle(data.qd, output.reference));
+      v.acceleration = s * (angle(data.qdd, output.body) - angle(data.qdd, output.reference));
       break;
     }
     case OutputKind::slider_displacement: {
@@ -93,14 +141,15 @@ double output_derivative(const Model& model, const Data& data, const Output& out
   switch (output.kind) {
     case OutputKind::point_x:
     case OutputKind::point_y: {
-      if (output.point.body == kGround) return 0.0;
-      const int k = 3 * output.point.body;
-      const Eigen::Vector2d d = dq.segment<2>(k) + dq(k + 2) * perp(rotate(data.q(k + 2), output.point.local));
+      Eigen::Vector2d d = point_derivative(data, output.point, dq);
+      if (output.from) d -= point_derivative(data, *output.from, dq);
       return output.kind == OutputKind::point_x ? d.x() : d.y();
     }
+    case OutputKind::point_speed: return point_derivative(data, output.point, dq).norm();
+    case OutputKind::point_acceleration: return kNaN;
     case OutputKind::body_angle: {
       auto angle = [&](int body) { return body == kGround ? 0.0 : dq(3 * body + 2); };
-      return angle(output.body) - angle(output.reference);
+      return output.sense * (angle(output.body) - angle(output.reference));
     }
     case OutputKind::slider_displacement: {
       const Projection p = project(model, data, output);

@@ -53,4 +53,13 @@ Reaction PinInSlot::reaction(const ConstraintInput& in, std::span<const double> 
   return r;
 }
 
+Reaction Contact::reaction(const ConstraintInput& in, std::span<const double> lambda) const {
+  // The row is side n.(C - Q) - r, so -lambda side n is the force on the circle: N = -lambda.
+  Reaction r;
+  r.force = -lambda[0] * normal(in.bodies[1]);
+  r.at = contact_point(in.bodies[0], in.bodies[1]);
+  r.pin = true;  // a force along the normal through the contact point, no moment
+  return r;
+}
+
 }  // namespace gearkit::kin

@@ -40,6 +40,16 @@ Eigen::Vector2d read_xy(const YAML::Node& node, const std::string& file, Quantit
   return {scalar_quantity(node[0], file, q, unit), scalar_quantity(node[1], file, q, unit)};
 }
 
+// A contact joint as written, until its side can be taken from the placed drawing.
+struct PendingContact {
+  BodyPoint circle, line;
+  double radius = 0.0;
+  Eigen::Vector2d axis;
+  int side = 0;  // 0: from the drawing
+  int constraint = 0;
+  YAML::Node node;
+};
+
 // Builds the model step by step, remembering where each link was declared.
 class Reader {
  public:
@@ -62,6 +72,7 @@ class Reader {
     for (const YAML::Node& e : elements) read_element(e);
     for (const YAML::Node& d : drivers) read_driver(d);
     if (auto loads = root.optional_node("loads")) read_loads(*loads);
+    check_unknown_loads();
     if (root.has("outputs"))
       for (const YAML::Node& o : root.sequence("outputs")) read_output(o);
     root.optional_node("equations");  // the course's coordinates: read by `kin --equations` (libsym)
@@ -164,6 +175,8 @@ class Reader {
       if (a.body == b.body) fail(j.node("at"), "a revolute joint needs two different links");
       add(name, std::make_shared<kin::Revolute>(a, b), node);
       revolutes_.push_back({a, b});
+    } else if (type == "contact") {
+      read_contact(j, name, node);
     } else {
       const BodyPoint moving = point_ref(j.node(type == "prismatic" ? "slider" : "pin"));
       const BodyPoint guide = point_ref(j.node(type == "prismatic" ? "guide" : "slot"));
@@ -178,7 +191,56 @@ class Reader {
         add(name, std::make_shared<kin::PinInSlot>(moving, guide, u), node);
       }
     }
+    read_friction(j, type, node);
     j.finish();
+  }
+
+  // A circle (radius 0: a point or an edge) of one link touching a line of another. Its side is
+  // given (left/right of the line looking along its axis) or taken from the drawing once the
+  // links are placed (place_links).
+  void read_contact(MapReader& j, const std::string& name, const YAML::Node& node) {
+    PendingContact c;
+    c.circle = point_ref(j.node("circle"));
+    c.line = point_ref(j.node("line"));
+    if (c.circle.body == c.line.body) fail(node, "the two sides of joint '" + name + "' are the same link");
+    c.radius = j.quantity_or("radius", Quantity::length, "mm", 0.0);
+    if (!(c.radius >= 0.0)) fail(j.node("radius"), "expected a radius >= 0");
+    const double axis = j.quantity("axis", Quantity::angle, "deg");
+    c.axis = Eigen::Vector2d(std::cos(axis), std::sin(axis));
+    if (j.has("side")) c.side = j.choice("side", {"left", "right"}) == "left" ? 1 : -1;
+    c.node = node;
+    c.constraint = static_cast<int>(mech_.model.constraints().size());
+    add(name, std::make_shared<kin::Contact>(c.circle, c.radius, c.line, c.axis, c.side ? c.side : 1), node);
+    contacts_.push_back(c);
+  }
+
+  // `friction: mu` on a joint, with the revolute's journal `radius` and the prismatic's bearing
+  // `length`.
+  void read_friction(MapReader& j, const std::string& type, const YAML::Node& node) {
+    const bool journal = type == "revolute", bearing = type == "prismatic";
+    if (!j.has("friction")) {
+      if (journal && j.has("radius")) fail(j.node("radius"), "expected 'radius' (the journal radius) only with 'friction'");
+      if (bearing && j.has("length")) fail(j.node("length"), "expected 'length' (the bearing length) only with 'friction'");
+      return;
+    }
+    kin::JointFriction f;
+    f.constraint = static_cast<int>(mech_.model.constraints().size()) - 1;
+    f.mu = j.number("friction");
+    if (!(f.mu >= 0.0)) fail(j.node("friction"), "expected a friction coefficient >= 0");
+    if (journal) {
+      if (!j.has("radius")) fail(node, "expected 'radius' (the journal radius of the friction circle) with 'friction'");
+      f.radius = j.quantity("radius", Quantity::length, "mm");
+      if (!(f.radius > 0.0)) fail(j.node("radius"), "expected a journal radius > 0");
+    }
+    if (bearing) {
+      f.length = j.quantity_or("length", Quantity::length, "mm", 0.0);
+      if (!(f.length >= 0.0)) fail(j.node("length"), "expected a bearing length >= 0");
+    }
+    try {
+      mech_.model.add_friction(f);
+    } catch (const std::invalid_argument& e) {
+      fail(j.node("friction"), e.what());
+    }
   }
 
   // Initial guesses: a link without an explicit position is placed so that its joint point
@@ -210,7 +272,38 @@ class Reader {
     m.ground() = mech_.model.ground();
     for (kin::Body& b : bodies) m.add_body(std::move(b));
     for (const kin::ModelConstraint& c : mech_.model.constraints()) m.add_constraint(c.name, c.constraint);
+    for (const kin::JointFriction& f : mech_.model.frictions()) m.add_friction(f);
     mech_.model = std::move(m);
+    for (const PendingContact& c : contacts_) set_contact_side(c);
+  }
+
+  // A contact without `side` touches from the side its circle is drawn on.
+  void set_contact_side(const PendingContact& c) {
+    if (c.side) return;
+    const auto global = [&](const BodyPoint& p) {
+      if (p.body == kGround) return p.local;
+      const kin::Body& b = mech_.model.bodies()[static_cast<std::size_t>(p.body)];
+      return Eigen::Vector2d(b.position_guess + kin::rotate(b.angle_guess, p.local));
+    };
+    const Eigen::Vector2d n = kin::rotate(angle_of(c.line.body), kin::perp(c.axis));
+    const double distance = n.dot(global(c.circle) - global(c.line));
+    const double scale = std::max(c.radius, 1e-3);  // 1 mm when the radius is 0
+    if (std::abs(distance) < 1e-6 * scale)
+      fail(c.node, "the contact's circle centre is drawn on its line: give 'side: left' or 'side: right' (the side of "
+                   "the line, looking along its axis, the circle lies on)");
+    kin::Model& m = mech_.model;
+    kin::Model rebuilt;
+    rebuilt.ground() = m.ground();
+    for (const kin::Body& b : m.bodies()) rebuilt.add_body(b);
+    for (std::size_t k = 0; k < m.constraints().size(); ++k) {
+      const kin::ModelConstraint& mc = m.constraints()[k];
+      if (static_cast<int>(k) == c.constraint)
+        rebuilt.add_constraint(mc.name, std::make_shared<kin::Contact>(c.circle, c.radius, c.line, c.axis, distance > 0 ? 1 : -1));
+      else
+        rebuilt.add_constraint(mc.name, mc.constraint);
+    }
+    for (const kin::JointFriction& f : m.frictions()) rebuilt.add_friction(f);
+    m = std::move(rebuilt);
   }
 
   void read_element(const YAML::Node& node) {
@@ -237,7 +330,7 @@ class Reader {
 
   void read_driver(const YAML::Node& node) {
     MapReader d(node, doc_.file, "driver");
-    const std::string type = d.choice("type", {"angle", "displacement"});
+    const std::string type = d.choice("type", {"angle", "displacement", "point"});
     const std::string name = unique_name(d.optional_string("name"), type + " driver", node);
     MechanismDriver md;
     md.name = name;
@@ -258,6 +351,8 @@ class Reader {
       const int reference = d.has("relative_to") ? link_ref(d.node("relative_to")) : kGround;
       drawn = angle_of(body) - angle_of(reference);
       c = std::make_shared<kin::AngleDriver>(body, reference, motion);
+    } else if (type == "point") {
+      c = point_driver(d, motion, drawn);
     } else {
       const YAML::Node joint = d.node("joint");
       const std::string jname = scalar(joint, doc_.file, "a prismatic joint name");
@@ -267,23 +362,46 @@ class Reader {
       c = std::make_shared<kin::DisplacementDriver>(slider, guide, axis, motion);
     }
     const double value = d.has("value") ? d.quantity("value", q, unit) : drawn;
-    if (auto r = d.optional_node("range")) {
-      if (!r->IsSequence() || (r->size() != 2 && r->size() != 3))
-        fail(*r, "expected 'range' as [start, end] or [start, end, step]");
-      DriverRange range;
-      range.start = scalar_quantity((*r)[0], doc_.file, q, unit);
-      range.end = scalar_quantity((*r)[1], doc_.file, q, unit);
-      range.step = r->size() == 3 ? scalar_quantity((*r)[2], doc_.file, q, unit)
-                                  : std::abs(range.end - range.start) / 100.0;
-      if (!(range.step > 0.0) || range.start == range.end) fail(*r, "expected a range with start != end and a step > 0");
-      if (std::abs(range.end - range.start) / range.step + 1 > io::limits::kSweepPositions)
-        fail(*r, fmt::format("expected at most {:.0f} positions in the range", io::limits::kSweepPositions));
-      md.range = range;
-    }
+    if (auto r = d.optional_node("range")) md.range = read_range(*r, q, unit);
+    std::optional<double> effort;
+    if (d.has("effort")) effort = d.quantity("effort", angular ? Quantity::torque : Quantity::force, angular ? "N*m" : "N");
+    if (effort) effort_nodes_.push_back(d.node("effort"));
     d.finish();
     add(name, c, node);
     mech_.model.set_driver(static_cast<int>(mech_.model.constraints().size()) - 1, md.quantity, md.range ? md.range->start : value);
+    if (effort) mech_.model.set_driver_effort(static_cast<int>(mech_.model.drivers().size()) - 1, *effort);
     mech_.drivers.push_back(md);
+  }
+
+  // A point of a link moved along a direction: u . (P - O) = f(t), with O a point (`from`,
+  // default the ground's origin) and u at `axis` in O's link frame. Its drawn value is the
+  // drawing's u . (P - O).
+  std::shared_ptr<const kin::Constraint> point_driver(MapReader& d, const kin::Motion& motion, double& drawn) {
+    const BodyPoint p = point_ref(d.node("point"));
+    const BodyPoint from = d.has("from") ? point_ref(d.node("from")) : BodyPoint{kGround, Eigen::Vector2d::Zero()};
+    if (p.body == kGround) fail(d.node("point"), "expected a point of a moving link, found a ground point");
+    if (p.body == from.body) fail(d.node("from"), "expected 'from' on another link than the driven point");
+    const double axis = d.quantity("axis", Quantity::angle, "deg");
+    const Eigen::Vector2d u(std::cos(axis), std::sin(axis));
+    const auto global = [&](const BodyPoint& x) {
+      if (x.body == kGround) return x.local;
+      const kin::Body& b = mech_.model.bodies()[static_cast<std::size_t>(x.body)];
+      return Eigen::Vector2d(b.position_guess + kin::rotate(b.angle_guess, x.local));
+    };
+    drawn = kin::rotate(angle_of(from.body), u).dot(global(p) - global(from));
+    return std::make_shared<kin::DisplacementDriver>(p, from, u, motion);
+  }
+
+  DriverRange read_range(const YAML::Node& r, Quantity q, const std::string& unit) {
+    if (!r.IsSequence() || (r.size() != 2 && r.size() != 3)) fail(r, "expected 'range' as [start, end] or [start, end, step]");
+    DriverRange range;
+    range.start = scalar_quantity(r[0], doc_.file, q, unit);
+    range.end = scalar_quantity(r[1], doc_.file, q, unit);
+    range.step = r.size() == 3 ? scalar_quantity(r[2], doc_.file, q, unit) : std::abs(range.end - range.start) / 100.0;
+    if (!(range.step > 0.0) || range.start == range.end) fail(r, "expected a range with start != end and a step > 0");
+    if (std::abs(range.end - range.start) / range.step + 1 > io::limits::kSweepPositions)
+      fail(r, fmt::format("expected at most {:.0f} positions in the range", io::limits::kSweepPositions));
+    return range;
   }
 
   void read_loads(const YAML::Node& node) {
@@ -299,7 +417,14 @@ class Reader {
         MapReader r(f, doc_.file, "force");
         kin::PointForce pf;
         pf.at = point_ref(r.node("at"));
-        pf.force = read_xy(r.node("force"), doc_.file, Quantity::force, "N", "a force");
+        pf.unknown = r.boolean_or("unknown", false);
+        if (pf.unknown) {  // inverse kinetostatics: the magnitude along `direction` is solved
+          const double a = r.quantity("direction", Quantity::angle, "deg");
+          pf.force = {std::cos(a), std::sin(a)};
+          unknown_nodes_.push_back(f);
+        } else {
+          pf.force = read_xy(r.node("force"), doc_.file, Quantity::force, "N", "a force");
+        }
         pf.name = r.optional_string("name").value_or("force " + std::to_string(mech_.model.forces().size() + 1));
         r.finish();
         mech_.model.add_force(pf);
@@ -309,7 +434,9 @@ class Reader {
         MapReader r(t, doc_.file, "torque");
         kin::BodyTorque bt;
         bt.body = link_ref(r.node("link"));
-        bt.torque = r.quantity("torque", Quantity::torque, "N*m");
+        bt.unknown = r.boolean_or("unknown", false);
+        bt.torque = bt.unknown ? 1.0 : r.quantity("torque", Quantity::torque, "N*m");
+        if (bt.unknown) unknown_nodes_.push_back(t);
         bt.name = r.optional_string("name").value_or("torque " + std::to_string(mech_.model.torques().size() + 1));
         r.finish();
         mech_.model.add_torque(bt);
@@ -332,20 +459,32 @@ class Reader {
     l.finish();
   }
 
+  // Inverse kinetostatics: one unknown load per driver with a given effort.
+  void check_unknown_loads() const {
+    if (unknown_nodes_.size() == effort_nodes_.size()) return;
+    if (unknown_nodes_.size() > effort_nodes_.size())
+      fail(unknown_nodes_[effort_nodes_.size()], fmt::format("expected one driver with a given 'effort' per unknown load, found "
+                                                             "{} unknown load(s) and {} effort(s)", unknown_nodes_.size(), effort_nodes_.size()));
+    fail(effort_nodes_[unknown_nodes_.size()], fmt::format("expected one unknown load (unknown: true) per driver with a given "
+                                                           "'effort', found {} effort(s) and {} unknown load(s)", effort_nodes_.size(), unknown_nodes_.size()));
+  }
+
   void read_output(const YAML::Node& node) {
     MapReader r(node, doc_.file, "output");
     kin::Output o;
     o.name = r.string("name");
     for (const kin::Output& other : mech_.outputs)
       if (other.name == o.name) fail(r.node("name"), "duplicate output '" + o.name + "'");
-    const std::string type = r.choice("type", {"x", "y", "angle", "slider"});
+    const std::string type = r.choice("type", {"x", "y", "angle", "slider", "speed", "acceleration"});
     if (type == "x" || type == "y") {
       o.kind = type == "x" ? kin::OutputKind::point_x : kin::OutputKind::point_y;
       o.point = point_ref(r.node("point"));
+      if (r.has("from")) o.from = point_ref(r.node("from"));
+    } else if (type == "speed" || type == "acceleration") {
+      o.kind = type == "speed" ? kin::OutputKind::point_speed : kin::OutputKind::point_acceleration;
+      o.point = point_ref(r.node("point"));
     } else if (type == "angle") {
-      o.kind = kin::OutputKind::body_angle;
-      o.body = link_ref(r.node("link"));
-      o.reference = r.has("relative_to") ? link_ref(r.node("relative_to")) : kGround;
+      read_angle_output(r, o);
     } else {
       o.kind = kin::OutputKind::slider_displacement;
       const YAML::Node joint = r.node("joint");
@@ -355,6 +494,27 @@ class Reader {
     }
     r.finish();
     mech_.outputs.push_back(o);
+  }
+
+  // An angle output: of `link`'s x axis, or `along: [link.A, link.B]` (the direction A -> B),
+  // relative to `relative_to`, measured from `zero` (90 deg: from the vertical), `clockwise`.
+  void read_angle_output(MapReader& r, kin::Output& o) const {
+    o.kind = kin::OutputKind::body_angle;
+    if (r.has("along")) {
+      const YAML::Node along = r.node("along");
+      if (!along.IsSequence() || along.size() != 2) fail(along, "expected 'along' as two points [link.A, link.B]");
+      const BodyPoint a = point_ref(along[0]), b = point_ref(along[1]);
+      if (a.body != b.body || a.body == kGround) fail(along, "expected two points of one moving link");
+      if ((b.local - a.local).norm() < 1e-12) fail(along, "expected two distinct points");
+      o.body = a.body;
+      o.offset = std::atan2(b.local.y() - a.local.y(), b.local.x() - a.local.x());
+      if (r.has("link") && link_ref(r.node("link")) != o.body) fail(r.node("link"), "expected the link of the 'along' points");
+    } else {
+      o.body = link_ref(r.node("link"));
+    }
+    o.reference = r.has("relative_to") ? link_ref(r.node("relative_to")) : kGround;
+    o.zero = r.quantity_or("zero", Quantity::angle, "deg", 0.0);
+    o.sense = r.boolean_or("clockwise", false) ? -1 : 1;
   }
 
   const io::YamlDocument& doc_;
@@ -368,12 +528,14 @@ class Reader {
     Eigen::Vector2d axis;
   };
   std::map<std::string, PrismaticInfo> prismatics_;
+  std::vector<PendingContact> contacts_;
+  std::vector<YAML::Node> unknown_nodes_, effort_nodes_;  // inverse kinetostatics
 };
 
 }  // namespace
 
 const std::vector<std::string>& builtin_joint_types() {
-  static const std::vector<std::string> types{"revolute", "prismatic", "pin_in_slot"};
+  static const std::vector<std::string> types{"revolute", "prismatic", "pin_in_slot", "contact"};
   return types;
 }
 

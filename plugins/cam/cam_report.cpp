@@ -382,6 +382,51 @@ double pivot_clearance(const CamModel& model, const CamResult& r) {
   return model.design.follower.pivot_distance - model.pivot_radius_mm - r.checks.radius_max.value;
 }
 
+// An angle [rad] as course notes write it: a fraction of Pi with a small denominator ("2*Pi/3"),
+// else its decimal value.
+std::string angle_text(double rad) {
+  for (int q = 1; q <= 36; ++q) {
+    const double p = rad / std::numbers::pi * q;
+    if (std::abs(p - std::round(p)) > 1e-9 * std::max(1.0, std::abs(p))) continue;
+    const long n = std::lround(p);
+    if (n == 0) return "0";
+    const std::string num = n == 1 ? "Pi" : n == -1 ? "-Pi" : fmt::format("{}*Pi", n);
+    return q == 1 ? num : fmt::format("{}/{}", num, q);
+  }
+  return fmt::format("{:.15g}", rad);
+}
+
+// s(theta) and ds/dtheta of every segment as formulas in theta [rad] (course notes' form,
+// OTM 2015 problem 2 a): a rise or fall s0 +- L y(u), u = (theta - theta0)/beta.
+void formulas_section(const CamModel& model, io::Report& rep) {
+  const gc::MotionProgram& program = model.design.program;
+  const FollowerUnits units(model);
+  io::Table t{"Motion formulas (theta in rad)", {"segment", "from [deg]", "to [deg]", fmt::format("{}(theta) [{}]", units.s_name, units.d_unit),
+                                                 fmt::format("d{}/dtheta [{}/rad]", units.s_name, units.d_unit)}, {}};
+  nlohmann::json all = nlohmann::json::array();
+  for (const gc::Segment& seg : program.segments()) {
+    const double s0 = program.at(seg.start).s;
+    std::string s_text = fmt::format("{:.15g}", s0), ds_text = "0";
+    const bool moves = seg.kind == gc::SegmentKind::rise || seg.kind == gc::SegmentKind::fall;
+    if (seg.kind != gc::SegmentKind::dwell && !moves) continue;  // tables and polynomials: no closed law here
+    if (moves) {
+      const std::string beta = angle_text(seg.end - seg.start), theta0 = angle_text(seg.start);
+      const std::string u = (theta0 == "0" ? std::string("theta") : "theta-" + theta0) + ")/(" + beta;
+      const auto f = gc::law_formula(seg.law, "(" + u + ")");
+      if (!f) continue;
+      const char* sign = seg.kind == gc::SegmentKind::rise ? "+" : "-";
+      s_text = fmt::format("{}{}{:.15g}*({})", s0 == 0.0 ? "" : fmt::format("{:.15g}", s0), s0 == 0.0 && *sign == '+' ? "" : sign, seg.lift, f->y);
+      ds_text = fmt::format("{}{:.15g}/({})*({})", *sign == '-' ? "-" : "", seg.lift, beta, f->dy);
+    }
+    t.add_row({kind_name(seg), io::fixed(deg(seg.start), 2), io::fixed(deg(seg.end), 2), s_text, ds_text});
+    all.push_back({{"kind", kind_name(seg)}, {"from_deg", deg(seg.start)}, {"to_deg", deg(seg.end)},
+                   {"law", moves ? std::string(gc::name_of(seg.law)) : "dwell"}, {"s", s_text}, {"ds_dtheta", ds_text},
+                   {"unit", units.d_unit}});
+  }
+  rep.tables.push_back(std::move(t));
+  rep.json["motion_formulas"] = all;
+}
+
 io::Report cam_report(const CamModel& model, const CamResult& result, const std::string& file) {
   const gc::CamDesign& d = model.design;
   const bool osc = d.follower.motion == gc::FollowerMotion::oscillating;
@@ -394,6 +439,7 @@ io::Report cam_report(const CamModel& model, const CamResult& result, const std:
   j["type"] = d.follower.closure == gc::Closure::groove ? "groove" : d.follower.closure == gc::Closure::conjugate ? "conjugate" : "plate";
   j["base_radius_mm"] = number(d.base_radius);
   program_section(model, rep);
+  formulas_section(model, rep);
   checks_section(model, result, rep);
   checks_json(model, result, j);
   peaks_section(model, result, rep);

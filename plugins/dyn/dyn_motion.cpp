@@ -184,6 +184,7 @@ void report_summary(const Model& m, const MotionQuestion& q, const Machine& mach
              io::fixed(machine.inertia, 6), "kg*m^2"});
   t.add_row({"start speed", io::fixed(q.speed * rad_s_to_rpm, 2), "rpm"});
   j["inertia_motor_shaft_kgm2"] = machine.inertia;
+  j["equation"] = equation_of_motion(m, machine.line, out);
   j["start_omega_rad_s"] = q.speed;
   if (q.with_flywheel) {
     t.add_row({"flywheel added to the load shaft", io::fixed(out.flywheel_inertia, 4), "kg*m^2"});

@@ -25,6 +25,11 @@ void add_flywheel(const Model& model, Output& out);
 void add_energy(const Model& model, Output& out);
 /// Equation of motion on the motor shaft (model.motion).
 void add_motion(const Model& model, Output& out);
+/// The equation of motion as the course writes it: the power balance on the load shaft,
+/// I omega alpha [+ 1/2 I' omega^3] + T_r omega [+ F r omega] - eta P = 0, as a report note and
+/// its JSON (`shaft`, `form`, `inertia_kgm2`, `efficiency`, `drive`, and `motor_power_W` or
+/// `motor_torque_Nm` when the motor law gives one). `line` is the drive line the motion uses.
+nlohmann::json equation_of_motion(const Model& model, const gd::DriveLine& line, Output& out);
 /// Reduced force (and torque) of forces, weights and inertia forces at one instant (model.reduced_force).
 void add_reduced_force(const Model& model, Output& out);
 

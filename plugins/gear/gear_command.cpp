@@ -35,8 +35,9 @@ namespace gg = gearkit::gear;
 namespace {
 
 constexpr std::string_view kUsage =
-    "gearkit gear [PAIR.yaml] --z1 N --z2 N --module LEN [--pressure-angle 20] [--helix-angle 0] "
-    "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional]] [--internal] [--transverse] "
+    "gearkit gear [PAIR.yaml] --z1 N --z2 N --module LEN [--ratio U] [--pressure-angle 20] [--helix-angle 0] "
+    "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional|min-shift [--undercut-limit "
+    "iso|practical]]] [--radii] [--internal] [--transverse] "
     "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
     "[--pin-diameter LEN] [--quality Q[,Q2] [--iso1328-edition 2013|1995]] "
     "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW | --din3967 27cd[,26cd]] [--min-backlash LEN] "
@@ -157,7 +158,7 @@ int run_gear_command(plugin::CommandContext& context) {
   std::optional<gg::InspectionResult> inspection;
   if (q.inspection) inspection = inspect(q.options.input, result, *q.inspection, vm);
 
-  io::Report report = gear_report(q.options.input, result);
+  io::Report report = gear_report(q.options.input, result, q.options.radii);
   if (inspection) add_inspection_report(report, *inspection);
   if (!q.options.svg.empty() || !q.options.dxf.empty() || vm.count("cutter-teeth") || vm.count("cutter-tip-radius")) {
     add_ring_cutting_report(report, q.options.input, result, q.options);

@@ -75,6 +75,9 @@ void add_gear_options(io::po::options_description& desc) {
   desc.add_options()
       ("z1", po::value<std::string>()->value_name("N"), "teeth of gear 1 (pinion)")
       ("z2", po::value<std::string>()->value_name("N"), "teeth of gear 2 (wheel, or ring with --internal)")
+      ("ratio", po::value<std::string>()->value_name("U"),
+       "gear ratio u = z2/z1 (4 for a reduction 1/4): with --z1 or --z2 it gives the other; with neither, the teeth of "
+       "the unshifted pair that fits --centre-distance")
       ("module", po::value<std::string>()->value_name("LEN"), "module (normal; transverse with --transverse), mm")
       ("pressure-angle", po::value<std::string>()->value_name("ANGLE"), "pressure angle, deg (default 20)")
       ("helix-angle", po::value<std::string>()->value_name("ANGLE"), "helix angle, deg (default 0: spur)")
@@ -82,8 +85,13 @@ void add_gear_options(io::po::options_description& desc) {
       ("x2", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 2 (default 0; ISO sign for a ring)")
       ("centre-distance", po::value<std::string>()->value_name("LEN"),
        "working centre distance, mm: the shift sum follows from it (with --x1: x2 = sum - x1)")
-      ("split", po::value<std::string>()->value_name("balanced|proportional|user"),
-       "split of the shift sum with --centre-distance (default balanced specific sliding; user with --x1)")
+      ("split", po::value<std::string>()->value_name("balanced|proportional|min-shift|user"),
+       "split of the shift sum with --centre-distance (default balanced specific sliding; min-shift: the smallest "
+       "shifts free of undercut; user with --x1)")
+      ("undercut-limit", po::value<std::string>()->value_name("iso|practical"),
+       "the undercut limit --split min-shift keeps: ISO x_min (default) or the practical (14 - z)/17 of DIN 3960 and "
+       "course notes")
+      ("radii", po::bool_switch(), "print the gear table in radii (r, r_w, r_b, r_a, r_f), as course notes do")
       ("internal", po::bool_switch(), "gear 2 is an internal gear (ring); z2 > z1")
       ("transverse", po::bool_switch(), "module and pressure angle are given in the transverse section")
       ("no-tip-shortening", po::bool_switch(), "keep d_a = d + 2 m (h_aP + x) even when k > 0")
@@ -108,11 +116,60 @@ void add_gear_options(io::po::options_description& desc) {
 
 namespace {
 
+// A whole number of teeth from a computed value, or an error naming --ratio.
+int whole_teeth(double value, std::string_view what) {
+  const double rounded = std::round(value);
+  if (!(std::fabs(value - rounded) <= 1e-6 * std::max(1.0, std::fabs(value))) || rounded < 1.0 || rounded > 100000.0)
+    fail("ratio", fmt::format("{} = {:.6g} is not a whole number of teeth", what, value));
+  return static_cast<int>(rounded);
+}
+
+// --ratio: the tooth numbers the course derives from the ratio (and the centre distance).
+// Returns true when they come from the centre distance (an unshifted pair at exactly it).
+bool teeth_from_ratio(const io::po::variables_map& vm, gg::GearPairInput& in) {
+  const double u = number(vm, "ratio");
+  if (!(u > 0.0 && std::isfinite(u))) fail("ratio", fmt::format("expected a ratio z2/z1 > 0, found {}", u));
+  if (given(vm, "z1") && given(vm, "z2")) fail("ratio", "contradicts --z1 with --z2 (the ratio follows from them)");
+  if (given(vm, "z1")) {
+    in.z1 = teeth(vm, "z1");
+    in.z2 = whole_teeth(u * in.z1, "z2 = u z1");
+    return false;
+  }
+  if (given(vm, "z2")) {
+    in.z2 = teeth(vm, "z2");
+    in.z1 = whole_teeth(in.z2 / u, "z1 = z2 / u");
+    return false;
+  }
+  if (!given(vm, "centre-distance")) fail("ratio", "needs --z1, --z2 or --centre-distance to fix the tooth numbers");
+  for (const char* key : {"x1", "x2", "split"})
+    if (given(vm, key)) fail(key, "cannot be combined with --ratio without tooth numbers: the pair found is unshifted");
+  const double a = length_mm(vm, "centre-distance");
+  const double beta = given(vm, "helix-angle") ? angle_rad(vm, "helix-angle") : 0.0;
+  const bool transverse = vm["transverse"].as<bool>();
+  const double sum = transverse ? 2.0 * a / in.module : gg::teeth_sum_for_centre_distance(a, in.module, beta);
+  const int total = whole_teeth(sum, "z1 + z2 = 2 a cos(beta) / m");
+  in.z1 = whole_teeth(total / (1.0 + u), "z1 = (z1 + z2) / (1 + u)");
+  in.z2 = total - in.z1;
+  return true;
+}
+
+void read_module(const io::po::variables_map& vm, gg::GearPairInput& in) {
+  require(vm, "module", "the module");
+  in.module = length_mm(vm, "module");
+  if (!(in.module > 0.0)) fail("module", fmt::format("expected a module > 0 mm, found {} mm", in.module));
+}
+
 void read_teeth_and_module(const io::po::variables_map& vm, gg::GearPairInput& in) {
-  require(vm, "z1", "the teeth of gear 1");
-  in.z1 = teeth(vm, "z1");
-  require(vm, "z2", "the teeth of gear 2");
-  in.z2 = teeth(vm, "z2");
+  if (given(vm, "ratio")) {
+    read_module(vm, in);  // the tooth numbers follow from the ratio and the module
+    if (vm["internal"].as<bool>()) fail("ratio", "applies to external pairs only");
+    if (teeth_from_ratio(vm, in)) in.centre_distance.reset();  // a = a_d: unshifted, zero mounting
+  } else {
+    require(vm, "z1", "the teeth of gear 1 (or --ratio)");
+    in.z1 = teeth(vm, "z1");
+    require(vm, "z2", "the teeth of gear 2 (or --ratio)");
+    in.z2 = teeth(vm, "z2");
+  }
   in.internal = vm["internal"].as<bool>();
   in.system = vm["transverse"].as<bool>() ? gg::ModuleSystem::transverse : gg::ModuleSystem::normal;
   in.apply_tip_shortening = !vm["no-tip-shortening"].as<bool>();
@@ -120,9 +177,7 @@ void read_teeth_and_module(const io::po::variables_map& vm, gg::GearPairInput& i
     fail("z2", fmt::format("an internal gear (ring) needs more teeth than its pinion: expected z2 > {}, found {}",
                                       in.z1, in.z2));
   }
-  require(vm, "module", "the module");
-  in.module = length_mm(vm, "module");
-  if (!(in.module > 0.0)) fail("module", fmt::format("expected a module > 0 mm, found {} mm", in.module));
+  if (!given(vm, "ratio")) read_module(vm, in);
   if (given(vm, "pressure-angle")) {
     in.pressure_angle = angle_rad(vm, "pressure-angle");
     if (!(in.pressure_angle > 0.0 && in.pressure_angle < 45.0 * kDeg)) {
@@ -162,15 +217,23 @@ void read_shift(const io::po::variables_map& vm, gg::GearPairInput& in) {
   if (given(vm, "split")) {
     if (!in.centre_distance) fail("split", "only applies with --centre-distance");
     const std::string s = text_of(vm, "split");
-    const std::map<std::string, gg::ShiftSplit> splits = {
-        {"balanced", gg::ShiftSplit::balanced_sliding}, {"proportional", gg::ShiftSplit::proportional}, {"user", gg::ShiftSplit::user_x1}};
+    const std::map<std::string, gg::ShiftSplit> splits = {{"balanced", gg::ShiftSplit::balanced_sliding},
+                                                          {"proportional", gg::ShiftSplit::proportional},
+                                                          {"min-shift", gg::ShiftSplit::min_shift},
+                                                          {"user", gg::ShiftSplit::user_x1}};
     const auto it = splits.find(s);
-    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional or user, found {}", io::quote(s)));
+    if (it == splits.end()) fail("split", fmt::format("expected balanced, proportional, min-shift or user, found {}", io::quote(s)));
     if (given(vm, "x1") && it->second != gg::ShiftSplit::user_x1) {
       fail("split", fmt::format("'{}' contradicts --x1 (a given x1 means the user split)", s));
     }
     if (!given(vm, "x1") && it->second == gg::ShiftSplit::user_x1) fail("split", "'user' needs --x1");
     in.split = it->second;
+  }
+  if (given(vm, "undercut-limit")) {
+    if (in.split != gg::ShiftSplit::min_shift) fail("undercut-limit", "only applies with --split min-shift");
+    const std::string s = text_of(vm, "undercut-limit");
+    if (s != "iso" && s != "practical") fail("undercut-limit", fmt::format("expected iso or practical, found {}", io::quote(s)));
+    in.undercut_limit = s == "iso" ? gg::UndercutLimit::iso : gg::UndercutLimit::practical;
   }
 }
 
@@ -206,6 +269,7 @@ void read_pins(const io::po::variables_map& vm, gg::GearPairInput& in) {
 }
 
 void read_drawing(const io::po::variables_map& vm, GearCommandOptions& o) {
+  o.radii = vm.count("radii") && vm["radii"].as<bool>();
   if (given(vm, "svg")) o.svg = text_of(vm, "svg");
   if (given(vm, "dxf")) o.dxf = text_of(vm, "dxf");
   if (given(vm, "draw")) {
@@ -230,7 +294,8 @@ GearCommandOptions read_gear_options(const io::po::variables_map& vm) {
   GearCommandOptions o;
   read_teeth_and_module(vm, o.input);
   read_rack(vm, o.input);
-  read_shift(vm, o.input);
+  const bool unshifted = given(vm, "ratio") && !given(vm, "z1") && !given(vm, "z2");
+  if (!unshifted) read_shift(vm, o.input);
   read_allowances(vm, o.input);
   read_pins(vm, o.input);
   read_drawing(vm, o);

@@ -15,6 +15,7 @@ struct GearCommandOptions {
   std::string draw = "pair";  ///< pair | gear1 | gear2
   double tolerance = 1e-3;    ///< outline tolerance, mm (--tolerance)
   gearkit::gear::ShaperCutter cutter;  ///< the ring's cutter (--cutter-teeth, --cutter-tip-radius)
+  bool radii = false;         ///< --radii: the table in radii, as course notes print it
 };
 
 /// Adds the gear options to `desc`.
@@ -24,7 +25,7 @@ void add_gear_options(io::po::options_description& desc);
 /// out-of-range values and contradictory combinations.
 GearCommandOptions read_gear_options(const io::po::variables_map& vm);
 
-/// Reads only the drawing options --svg, --dxf, --draw, --tolerance, --cutter-* (with a gear-pair file).
+/// Reads only the drawing options --svg, --dxf, --draw, --tolerance, --cutter-* and --radii (with a gear-pair file).
 void read_drawing_options(const io::po::variables_map& vm, GearCommandOptions& o);
 
 /// The command-line option that corresponds to a GearPairInput field named by GeometryError.

@@ -22,7 +22,23 @@ std::string kind(const gg::GearPairInput& in) {
   return fmt::format("{} {}", in.internal ? "internal" : "external", in.helix_angle != 0.0 ? "helical" : "spur");
 }
 
-void gear_rows(io::Table& t, const gg::GearPairResult& r, bool helical, bool allowances) {
+// Diameters, or with --radii the radii course notes print (OTM 2015 problem 3: r, r', r_b,
+// r_c, r_f): the same quantities halved.
+void size_rows(io::Table& t, const gg::GearPairResult& r, bool radii) {
+  const auto& g1 = r.gear[0];
+  const auto& g2 = r.gear[1];
+  const double f = radii ? 0.5 : 1.0;
+  auto row = [&](const char* diameter, const char* radius, double gg::GearResult::*field) {
+    t.add_row({radii ? radius : diameter, num(f * (g1.*field)), num(f * (g2.*field))});
+  };
+  row("reference diameter d [mm]", "reference radius r [mm]", &gg::GearResult::d);
+  row("working diameter d_w [mm]", "working radius r_w [mm]", &gg::GearResult::d_w);
+  row("base diameter d_b [mm]", "base radius r_b [mm]", &gg::GearResult::d_b);
+  row("tip diameter d_a [mm]", "tip radius r_a [mm]", &gg::GearResult::d_a);
+  row("root diameter d_f [mm]", "root radius r_f [mm]", &gg::GearResult::d_f);
+}
+
+void gear_rows(io::Table& t, const gg::GearPairResult& r, bool helical, bool allowances, bool radii) {
   const auto& g1 = r.gear[0];
   const auto& g2 = r.gear[1];
   auto row = [&t](std::string name, std::string a, std::string b) { t.add_row({std::move(name), std::move(a), std::move(b)}); };
@@ -40,11 +56,7 @@ void gear_rows(io::Table& t, const gg::GearPairResult& r, bool helical, bool all
   }
   both("profile shift coefficient x", &gg::GearResult::x);
   both("profile shift x m_n [mm]", &gg::GearResult::shift_mm);
-  both("reference diameter d [mm]", &gg::GearResult::d);
-  both("working diameter d_w [mm]", &gg::GearResult::d_w);
-  both("base diameter d_b [mm]", &gg::GearResult::d_b);
-  both("tip diameter d_a [mm]", &gg::GearResult::d_a);
-  both("root diameter d_f [mm]", &gg::GearResult::d_f);
+  size_rows(t, r, radii);
   // Transverse values (the only ones for spur gears, as in the OTM 2015 table).
   both(helical ? "transverse pitch p_t [mm]" : "pitch p [mm]", &gg::GearResult::p_t);
   both(helical ? "transverse base pitch p_bt [mm]" : "base pitch p_b [mm]", &gg::GearResult::p_bt);
@@ -55,7 +67,8 @@ void gear_rows(io::Table& t, const gg::GearPairResult& r, bool helical, bool all
     both("virtual number of teeth z_n", &gg::GearResult::z_n, 3);
   }
   both("tip thickness s_an [mm]", &gg::GearResult::s_an);
-  both("undercut limit x_min", &gg::GearResult::x_min);
+  both("undercut limit x_min (ISO, rack tip radius)", &gg::GearResult::x_min);
+  both("practical undercut limit x'_min (DIN 3960)", &gg::GearResult::x_min_practical);
   both("form diameter d_Ff [mm]", &gg::GearResult::d_Ff);
   row("teeth spanned k", g1.k_span ? std::to_string(g1.k_span) : "-", g2.k_span ? std::to_string(g2.k_span) : "-");
   both("span W_k [mm]", &gg::GearResult::W_k);
@@ -134,6 +147,7 @@ nlohmann::json gear_json(const gg::GearResult& g) {
           {"chordal_thickness_mm", g.chordal_s},
           {"chordal_height_mm", g.chordal_h},
           {"x_min", jnum(g.x_min)},
+          {"x_min_practical", jnum(g.x_min_practical)},
           {"A_sn_mm", g.A_sn},
           {"W_k_actual_mm", jnum(g.W_k_actual)},
           {"M_d_actual_mm", jnum(g.M_d_actual)}};
@@ -166,9 +180,26 @@ nlohmann::json pair_json(const gg::PairResult& p, bool internal) {
   return j;
 }
 
+// Which undercut criterion says what, when they disagree (a gear between x'_min and x_min).
+void undercut_note(io::Report& report, const gg::GearPairInput& in, const gg::GearPairResult& r) {
+  for (int i = 0; i < 2; ++i) {
+    const gg::GearResult& g = r.gear[static_cast<std::size_t>(i)];
+    if (g.internal || !(g.x < g.x_min - 1e-9) || !(g.x >= g.x_min_practical - 1e-9)) continue;
+    report.notes.push_back(fmt::format(
+        "Undercut of gear {}: ISO's x_min = {:.4f} is the least shift with no undercut at all (the straight flank of the "
+        "rack, tip radius rho_fP* = {:g}, ends at or above the interference point); the practical limit x'_min = {:.4f} "
+        "(DIN 3960; (14 - z)/17 at 20 deg, as course notes write it) accepts a slight undercut that leaves the working "
+        "flank. With x = {:.4f} the course's answer is \"no undercut\" and ISO's is \"undercut\". The generated "
+        "involute then starts at d_Ff = {:.3f} mm: an involute-interference warning for the mating tip is the same "
+        "undercut seen from the mesh (generation removed the flank the tip would cut into, so the teeth do not collide, "
+        "but the contact below d_Ff is not on the involute).",
+        i + 1, g.x_min, in.rho_fP, g.x_min_practical, g.x, g.d_Ff));
+  }
+}
+
 }  // namespace
 
-io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r) {
+io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r, bool radii) {
   io::Report report;
   const bool helical = in.helix_angle != 0.0;
   const bool allowances = r.gear[0].A_sn != 0.0 || r.gear[1].A_sn != 0.0;
@@ -176,7 +207,7 @@ io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r)
   report.title = fmt::format("Gear table: {} pair, z1 = {}, z2 = {}, m_n = {:g} mm", kind(in), r.gear[0].z, r.gear[1].z,
                              r.gear[0].m_n);
   io::Table gears{"Gears", {"quantity", "gear 1", in.internal ? "gear 2 (ring)" : "gear 2"}, {}};
-  gear_rows(gears, r, helical, allowances);
+  gear_rows(gears, r, helical, allowances, radii);
   io::Table pair{"Pair", {"quantity", "value"}, {}};
   pair_rows(pair, r, helical, backlash);
   report.tables.push_back(std::move(gears));
@@ -187,9 +218,21 @@ io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r)
     report.notes.push_back("Ring shift x2 uses the ISO 21771 sign (x2 > 0 thickens the ring teeth); KHK/JIS tables "
                            "use the opposite sign.");
   }
+  undercut_note(report, in, r);
   report.warnings = r.warnings;
   report.json["pair"] = pair_json(r.pair, in.internal);
+  report.json["pair"]["undercut_limit"] = gg::to_string(in.undercut_limit);
   report.json["gears"] = {gear_json(r.gear[0]), gear_json(r.gear[1])};
+  if (radii)
+    for (std::size_t i = 0; i < 2; ++i) {
+      const gg::GearResult& g = r.gear[i];
+      nlohmann::json& j = report.json["gears"][i];
+      j["r_mm"] = 0.5 * g.d;
+      j["r_w_mm"] = 0.5 * g.d_w;
+      j["r_b_mm"] = 0.5 * g.d_b;
+      j["r_a_mm"] = 0.5 * g.d_a;
+      j["r_f_mm"] = 0.5 * g.d_f;
+    }
   return report;
 }
 

@@ -110,7 +110,7 @@ TEST(Messages, OptionsAndArgumentsAreNamedAsTyped) {
   expect_one_line_error(run_gearkit("--frobnicate"), "option '--frobnicate': expected an option listed by --help");
   // Issue 11 item F: a bad --z1 was reported as a missing --z2.
   expect_one_line_error(run_gearkit("gear --z1 x"), "option '--z1': expected a whole number of teeth, found 'x'");
-  expect_one_line_error(run_gearkit("gear --z1 12 --module 3"), "option '--z2': expected the teeth of gear 2, found none");
+  expect_one_line_error(run_gearkit("gear --z1 12 --module 3"), "option '--z2': expected the teeth of gear 2 (or --ratio), found none");
   auto synth = run_gearkit("train synth gearbox --ratio 3");
   expect_one_line_error(synth, "train synth: expected 'reducer' or 'planetary'");
   EXPECT_EQ(synth.err.find("gearkit: gearkit"), std::string::npos) << synth.err;

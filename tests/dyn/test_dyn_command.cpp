@@ -116,6 +116,13 @@ TEST(DynCommand, PaperTubeCutter) {
   ASSERT_TRUE(m["steady"].get<bool>());
   const double cycle_time = e["load_energy_J"].get<double>() / (2100 * 0.8);
   EXPECT_NEAR(m["steady_load_omega_rad_s"].get<double>(), 30 * pi / cycle_time, 1e-5 * 30 * pi / cycle_time);
+  // f) as the seed writes it: I_maq omega alpha + T_r omega - P eta_r = 0, I_maq = I_r / tau^2 + I_t.
+  const auto& eq = m["equation"];
+  EXPECT_EQ(eq["form"], "I omega alpha + T_r(theta) omega - eta P = 0");
+  EXPECT_EQ(eq["shaft"], "cutter");
+  EXPECT_NEAR(eq["inertia_kgm2"].get<double>(), 0.120 / std::pow(5.0 / 17.0, 2) + 9.5, 1e-12);
+  EXPECT_NEAR(eq["efficiency"].get<double>(), 0.8, 1e-15);
+  EXPECT_NEAR(eq["motor_power_W"].get<double>(), 2100.0, 1e-9);
 }
 
 TEST(DynCommand, ConveyorBelt) {

@@ -86,6 +86,18 @@ TEST(CylindricalGear, UndercutLimit) {
   }
 }
 
+TEST(CylindricalGear, PracticalUndercutLimit) {
+  // OTM 2015 problem 3 (seed 000_bc94d104a9983772.txt), solution table: x = (14 - Z)/17 at 20 deg.
+  for (int z : {5, 10, 14, 17, 40}) EXPECT_NEAR(gg::practical_min_shift(z, gg::Rack{}), (14.0 - z) / 17.0, 1e-15) << z;
+  // The rule behind it (Niemann, Maschinenelemente II; DIN 3960): z_g = 2 h_aP / sin^2(alpha)
+  // and z'_g = 5/6 z_g, to whole teeth: 15 deg gives 29.86 -> 30 and 25, so (25 - z)/30.
+  gg::Rack r15;
+  r15.alpha_P = 15.0 * kDeg;
+  EXPECT_NEAR(gg::practical_min_shift(12, r15), (25.0 - 12.0) / 30.0, 1e-15);
+  // Below ISO's no-undercut limit by about (z_g - z'_g)/z_g (a slight undercut accepted).
+  EXPECT_LT(gg::practical_min_shift(10, gg::Rack{}), gg::min_shift_no_undercut(10, 0.0, gg::Rack{}));
+}
+
 TEST(CylindricalGear, VirtualNumberOfTeeth) {
   // ISO 21771: z_n = z / (cos^2 beta_b cos beta); equals z for spur gears. By hand for z = 16,
   // beta = 25 deg: sin beta_b = sin 25 cos 20 = 0.397131, z_n = 16 / (0.842287 * 0.906308) = 20.9597.

@@ -99,6 +99,45 @@ TEST(GearCommand, UnitsInValuesAndTextTable) {
   EXPECT_NE(csv.out.find(","), std::string::npos);
 }
 
+TEST(GearCommand, TheCourseWayOtm2015Problem3) {
+  // a) the teeth from the ratio 1/4 (u = 4): z1 = 15 -> z2 = 60 at m = 6; the second stage at the
+  // same centre distance 225 mm with m = 5: z1 + z2 = 90, z = 18/72.
+  CliRun r = run("--z1 15 --ratio 4 --module 6 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["gears"][1]["z"], 60);
+  EXPECT_NEAR(j["pair"]["centre_distance_mm"].get<double>(), 225.0, 1e-9);
+  r = run("--ratio 4 --module 5 --centre-distance 225 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["gears"][0]["z"], 18);
+  EXPECT_EQ(j["gears"][1]["z"], 72);
+  EXPECT_EQ(j["pair"]["mounting"], "zero");
+  // b) V-0 with the least shift by the course's undercut limit, c) the table in radii.
+  r = run("--z1 10 --z2 40 --module 9 --centre-distance 225 --split min-shift --undercut-limit practical --radii --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["pair"]["mounting"], "V-0");
+  EXPECT_EQ(j["pair"]["shift_split"], "min-shift");
+  EXPECT_EQ(j["pair"]["undercut_limit"], "practical");
+  EXPECT_NEAR(j["gears"][0]["x"].get<double>(), 4.0 / 17.0, 1e-12);
+  EXPECT_NEAR(j["gears"][0]["x_min_practical"].get<double>(), 4.0 / 17.0, 1e-12);
+  EXPECT_NEAR(j["gears"][0]["r_b_mm"].get<double>(), 0.5 * j["gears"][0]["d_b_mm"].get<double>(), 1e-12);
+  EXPECT_NEAR(j["gears"][1]["r_a_mm"].get<double>(), 186.88, 0.005);  // the seed's r_c of the wheel
+  const CliRun text = run("--z1 10 --z2 40 --module 9 --centre-distance 225 --split min-shift --undercut-limit practical --radii");
+  EXPECT_NE(text.out.find("tip radius r_a [mm]"), std::string::npos);
+  EXPECT_EQ(text.out.find("tip diameter"), std::string::npos);
+  EXPECT_NE(text.out.find("the course's answer is \"no undercut\""), std::string::npos) << text.out;
+  // Bad combinations name the option.
+  EXPECT_NE(run("--ratio 4 --module 5 --centre-distance 226").err.find("--ratio"), std::string::npos);
+  EXPECT_NE(run("--ratio 4.5 --z1 15 --module 5").err.find("whole number"), std::string::npos);
+  EXPECT_NE(run("--ratio 4 --z1 15 --z2 60 --module 5").err.find("--ratio"), std::string::npos);
+  EXPECT_NE(run("--z1 10 --z2 40 --module 9 --undercut-limit iso").err.find("--undercut-limit"), std::string::npos);
+  EXPECT_NE(run("--z1 10 --z2 40 --module 9 --centre-distance 225 --split min-shift --undercut-limit din").err.find("iso or practical"),
+            std::string::npos);
+  EXPECT_EQ(run("--ratio 4 --module 5 --centre-distance 226").status, 2);
+}
+
 TEST(GearCommand, BadInputExitsWithStatus2AndNamesTheOption) {
   struct Case {
     const char* args;

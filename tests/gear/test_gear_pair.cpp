@@ -1,4 +1,5 @@
 // Tests for gearkit/gear/gear_pair.hpp: complete tables against published worked examples.
+#include <gearkit/gear/cylindrical_gear.hpp>
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/involute.hpp>
 
@@ -87,6 +88,45 @@ TEST(Otm2015Problem3, TableOfTheModifiedFirstStage) {
   EXPECT_NEAR(r.pair.c1, 2.25, 1e-9);  // holgura radial = 0.25 m
   EXPECT_NEAR(r.pair.c2, 2.25, 1e-9);
   EXPECT_NEAR(r.pair.sum_x, 0.0, 1e-12);
+}
+
+TEST(Otm2015Problem3, MinimumShiftSplitByTheCourseCriterion) {
+  // b) V-0 at the same centre distance, the pinion shifted just enough by the course's limit
+  // (14 - z)/17: x = +-4/17, shifts +-36/17 mm; ISO's limit asks x1 = 1 - z sin^2(20)/2 (for ISO 53 A:
+  // h_fP - rho_fP (1 - sin 20) - 5 sin^2 20 = 0.4151).
+  gg::GearPairInput in = pair(10, 40, 9.0, 0.0, 0.0);
+  in.centre_distance = 225.0;
+  in.split = gg::ShiftSplit::min_shift;
+  in.undercut_limit = gg::UndercutLimit::practical;
+  gg::GearPairResult r = gg::compute_gear_pair(in);
+  EXPECT_EQ(r.pair.mounting, gg::Mounting::v_zero);
+  EXPECT_EQ(r.pair.split, gg::ShiftSplit::min_shift);
+  EXPECT_NEAR(r.gear[0].x, 4.0 / 17.0, 1e-12);
+  EXPECT_NEAR(r.gear[1].x, -4.0 / 17.0, 1e-12);
+  EXPECT_NEAR(r.gear[0].shift_mm, 36.0 / 17.0, 1e-12);
+  EXPECT_NEAR(r.gear[0].x_min_practical, 4.0 / 17.0, 1e-15);
+  // ISO says undercut there, and the warning says which criterion says what.
+  EXPECT_TRUE(has_warning(r, "undercut by ISO"));
+  EXPECT_TRUE(has_warning(r, "practical limit"));
+  in.undercut_limit = gg::UndercutLimit::iso;
+  r = gg::compute_gear_pair(in);
+  const double iso = 1.25 - 0.38 * (1 - std::sin(20 * kDeg)) - 5.0 * std::pow(std::sin(20 * kDeg), 2);
+  EXPECT_NEAR(r.gear[0].x, iso, 1e-12);
+  EXPECT_FALSE(has_warning(r, "undercut"));
+  // Room for both: the least max |x| is the even split of the sum.
+  gg::GearPairInput v = pair(20, 40, 3.0, 0.0, 0.0);
+  v.centre_distance = gg::centre_distance(90.0, 20 * kDeg, gg::working_pressure_angle(20 * kDeg, 20 * kDeg, 20, 40, 0.3));
+  v.split = gg::ShiftSplit::min_shift;
+  r = gg::compute_gear_pair(v);
+  EXPECT_NEAR(r.gear[0].x, 0.15, 1e-9);
+  EXPECT_NEAR(r.gear[1].x, 0.15, 1e-9);
+  // No room: 8 and 9 teeth at their reference distance; gear 1 gets its limit, with a warning.
+  gg::GearPairInput tight = pair(8, 9, 2.0, 0.0, 0.0);
+  tight.centre_distance = 17.0;
+  tight.split = gg::ShiftSplit::min_shift;
+  r = gg::compute_gear_pair(tight);
+  EXPECT_TRUE(has_warning(r, "no split"));
+  EXPECT_NEAR(r.gear[0].x, gg::min_shift_no_undercut(8, 0.0, gg::Rack{}), 1e-12);
 }
 
 // ---- External V pair: KHK example as reproduced by bolsover.com ----

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <filesystem>
 #include <fstream>
 
@@ -217,6 +218,67 @@ TEST(KinCommand, BadInput) {
   expect_bad_input(run_gearkit("kin"), "expected the FILE argument, found none");
   // A failed --plot leaves no file and says which option.
   expect_bad_input(run_gearkit("kin " + shell_quote(kExamples + "four_bar.yaml") + " --plot /nonexistent/dir/p.svg"), "--plot");
+}
+
+const std::string kSeeds = std::string(GEARKIT_SOURCE_DIR) + "/examples/seeds/";
+
+// Seed 004 B1 (door retainer, deduced dimensions): the lever's free body is the seed's diagram,
+// N_A = N_B horizontal (its horizontal balance -N_A + N_B = 0), T_A and T_B along the rod, and
+// the casing's vertical force V = T_A + T_B at O; the rod pulled up wedges from mu = 0.06855.
+TEST(KinCommand, DoorRetainerFrictionAndFreeBodies) {
+  const auto j = run_json(shell_quote(kSeeds + "etseib2021_b1_door_retainer.yaml"));
+  const auto& fr = j["positions"][0]["friction"];
+  EXPECT_FALSE(fr["forward"]["wedged"].get<bool>());
+  const double mu_min = 10 * std::sqrt(10.3 * 10.3 - 100) / 10 / 36;  // d_e tan(alpha) / (2e + d_e)
+  EXPECT_NEAR(fr["forward"]["critical_friction"][0]["mu"].get<double>(), mu_min, 1e-12);
+  EXPECT_TRUE(fr["reverse"]["wedging_factor"].is_null());
+  const nlohmann::json* lever = nullptr;
+  for (const auto& b : j["free_bodies"])
+    if (b["link"] == "lever") lever = &b;
+  ASSERT_NE(lever, nullptr);
+  std::map<std::string, nlohmann::json> f;
+  for (const auto& x : (*lever)["forces"]) f[x["from"].get<std::string>()] = x;
+  EXPECT_NEAR(f["A"]["force_N"][0].get<double>(), -f["B"]["force_N"][0].get<double>(), 1e-9);
+  EXPECT_NEAR(f["O"]["force_N"][0].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(-f["O"]["force_N"][1].get<double>(), f["A"]["force_N"][1].get<double>() + f["B"]["force_N"][1].get<double>(), 1e-9);
+  EXPECT_NEAR(f["A"]["friction"].get<double>(), 0.05 * f["A"]["normal_N"].get<double>(), 1e-9);
+}
+
+// Seed 004 D1 (wedge brake): T_min = F0 r / (2 cos(alpha)) clockwise at mu = tan(alpha); counter-
+// clockwise it wedges. Seed 000 P1 (gym machine): the point driver V_A = 2 m/s and the speed of
+// the seat. Seed 004 B2 d): the spring force from the given torque.
+TEST(KinCommand, WedgeBrakePointDriverAndInverseKinetostatics) {
+  auto j = run_json(shell_quote(kSeeds + "etseib2021_d1_wedge_brake.yaml"));
+  EXPECT_NEAR(j["positions"][0]["driving_torque_Nm"].get<double>(), -15 * 0.06 / (2 * std::cos(15 * M_PI / 180)), 1e-9);
+  EXPECT_TRUE(j["positions"][0]["friction"]["reverse"]["wedged"].get<bool>());
+  EXPECT_TRUE(j["positions"][0]["friction"]["reverse"][std::string("driving_torque_Nm")].is_null());
+  j = run_json(shell_quote(kSeeds + "otm2015_p1_gym.yaml"));
+  const auto& o = j["positions"][0]["outputs"];
+  EXPECT_NEAR(o["omega_2_rate_rad_s"].get<double>(), 2.0 / 1.2, 1e-6);  // omega_2 = V_A / O2A, clockwise
+  EXPECT_NEAR(o["V_B_mm_s"].get<double>(), 2000.0 * 0.3 / 1.2, 1e-3);
+  EXPECT_NEAR(o["V_5_mm_s"].get<double>(), o["V_C_mm_s"].get<double>() * 100 / 75, 1e-6);  // homology O4D/O4C
+  EXPECT_TRUE(o["a_5_ratio"].is_null());
+  EXPECT_TRUE(j["warnings"].empty()) << j["warnings"].dump();
+  j = run_json(shell_quote(kSeeds + "etseib2021_b2d_spring_compressor_inverse.yaml"));
+  EXPECT_NEAR(j["positions"][0]["driving_torque_Nm"].get<double>(), -10.0, 1e-9);
+  EXPECT_EQ(j["positions"][0]["unknown_loads"][0]["name"], "F_m");
+}
+
+TEST(KinCommand, BadFrictionAndContactInput) {
+  const auto dir = scratch_dir("kin-bad-friction");
+  const std::string base = slurp(kSeeds + "etseib2021_b1_door_retainer.yaml");
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string t = base;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "a.yaml", replaced("axis: 90 deg, side: left, ", "axis: 90 deg, ")))),
+                   "side: left");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "b.yaml", replaced("side: left, friction: 0.05", "side: left, friction: -1")))),
+                   "friction coefficient >= 0");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "c.yaml", replaced("side: left", "side: up")))), "c.yaml:");
+  expect_bad_input(run_gearkit("kin " + shell_quote(write(dir, "d.yaml", replaced("speed: 0 m/s}", "speed: 0 m/s, effort: 3 N}")))),
+                   "unknown load");
 }
 
 TEST(KinCommand, EveryExampleRuns) {

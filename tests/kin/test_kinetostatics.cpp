@@ -68,6 +68,105 @@ TEST(Kinetostatics, SpringCompressorSeedAnswers) {
   EXPECT_NEAR(rod->axial_force, 1112.0, 1.0);
 }
 
+// Inverse kinetostatics, seed 004 B2 d): the torque T = 20 N m given (10 N m clockwise on the
+// half model), the spring force F_m is the unknown. The seed's value with its formula corrected
+// (docs/seeds.md): F_m = T l3 sin(phi2 - phi3) / (2 l1 (l3 + l4) cos(phi3) cos(phi2 - phi1)) =
+// 441.8 N with l1 = 9, l3 = 55, l3 + l4 = 100 mm.
+TEST(Kinetostatics, SpringForceFromTheGivenTorque) {
+  Model m = testing::spring_compressor((90 - 43.76) * kDeg);
+  m.add_force({{2, *m.bodies()[2].point("V")}, {0.0, 1.0}, "F_m", true});
+  m.set_driver_effort(0, -10.0);
+  Data data(m);
+  ASSERT_TRUE(solve_position(m, data, 0.0).converged);
+  ASSERT_TRUE(solve_velocity(m, data));
+  ASSERT_TRUE(solve_acceleration(m, data));
+  const ForceAnalysis f = solve_forces(m, data);
+  ASSERT_EQ(f.unknown_loads.size(), 1u);
+  const double formula = 20.0 * 0.055 * std::sin(46.24 * kDeg) / (2 * 0.009 * 0.100 * std::cos(0.0) * std::cos(2.48 * kDeg));
+  EXPECT_NEAR(f.unknown_loads[0].value, formula, 1e-9);
+  EXPECT_NEAR(f.unknown_loads[0].value, 441.8, 0.05);
+  EXPECT_NEAR(f.unknown_loads[0].force.y(), formula, 1e-9);
+  EXPECT_NEAR(f.effort_virtual_power[0], -10.0, 1e-12);  // the given effort, reproduced
+  EXPECT_NEAR(f.effort_lagrange[0], -10.0, 1e-9);
+  // Two unknowns need two given efforts.
+  m.add_torque({1, 1.0, "extra", true});
+  Data d2(m);
+  ASSERT_TRUE(solve_position(m, d2, 0.0).converged);
+  EXPECT_THROW(solve_forces(m, d2), std::invalid_argument);
+}
+
+// Inverse kinetostatics with friction: a block pushed up an incline (theta, mu) by a given force
+// E along it, held back by an unknown horizontal force P (which also lifts it off the incline by
+// P sin(theta)): E = m g sin(theta) + P cos(theta) + mu (m g cos(theta) - P sin(theta)), so
+// P = (E - m g (sin + mu cos)) / (cos - mu sin).
+TEST(Kinetostatics, UnknownLoadWithFriction) {
+  const double theta = 25 * kDeg, mass = 3.0, g = 9.81, mu = 0.25, E = 60.0;
+  Model m;
+  m.ground().points = {{"O", {0, 0}}};
+  const int block = testing::add_link(m, "block", theta, {{"P", {0, 0}}}, mass, "P");
+  const BodyPoint p = testing::at(m, block, "P"), o{kGround, {0, 0}};
+  const Eigen::Vector2d axis(std::cos(theta), std::sin(theta));
+  const int guide = m.add_constraint("guide", std::make_shared<Prismatic>(p, o, axis, theta));
+  const int drv = m.add_constraint("push", std::make_shared<DisplacementDriver>(p, o, axis, Motion{0.0, 0.0}));
+  m.set_driver(drv, DriverQuantity::displacement, 0.0);
+  m.set_driver_effort(0, E);
+  m.set_gravity({0, -g});
+  m.add_friction({guide, mu, 0.0, 0.0});
+  m.add_force({p, {-1.0, 0.0}, "P", true});
+  Data data(m);
+  ASSERT_TRUE(solve_position(m, data, 0.0).converged);
+  ASSERT_TRUE(solve_velocity(m, data));
+  ASSERT_TRUE(solve_acceleration(m, data));
+  const ForceAnalysis f = solve_forces(m, data);
+  const double P = (E - mass * g * (std::sin(theta) + mu * std::cos(theta))) / (std::cos(theta) - mu * std::sin(theta));
+  ASSERT_EQ(f.unknown_loads.size(), 1u);
+  EXPECT_NEAR(f.unknown_loads[0].value, P, 1e-8);
+  EXPECT_NEAR(f.effort_virtual_power[0], E, 1e-8);
+}
+
+// Free-body diagrams: every moving body's forces (reactions, driver, weights, inertia, loads)
+// balance, forces and moments, on a four-bar with masses, accelerations, friction in every pin
+// and a load, and on the lifting platform (a load on the platform, two-force rod).
+TEST(Kinetostatics, FreeBodiesBalance) {
+  std::vector<Model> models;
+  Model m = testing::four_bar({0.04, 0.12, 0.08, 0.1}, 50 * kDeg, Motion{12.0, 30.0});
+  Model loaded;
+  loaded.ground() = m.ground();
+  for (Body b : m.bodies()) {
+    b.mass = 0.3;
+    b.inertia = 2e-4;
+    b.centre_of_mass = 0.5 * b.points.back().second;
+    loaded.add_body(b);
+  }
+  for (const ModelConstraint& c : m.constraints()) loaded.add_constraint(c.name, c.constraint);
+  loaded.set_driver(m.drivers()[0].constraint, DriverQuantity::angle, m.drivers()[0].value);
+  loaded.set_gravity({0, -9.81});
+  loaded.add_force({testing::at(loaded, 1, "B"), {5.0, -2.0}, "pull"});
+  for (const char* pin : {"O2", "A", "B", "O4"}) loaded.add_friction({*loaded.constraint_index(pin), 0.2, 0.006, 0.0});
+  models.push_back(loaded);
+  models.push_back(testing::lifting_platform(69.5 * kDeg));
+  for (const Model& model : models) {
+    Data data(model);
+    ASSERT_TRUE(solve_position(model, data, 0.0).converged);
+    ASSERT_TRUE(solve_velocity(model, data));
+    ASSERT_TRUE(solve_acceleration(model, data));
+    const ForceAnalysis f = solve_forces(model, data);
+    const std::vector<FreeBody> fb = free_bodies(model, data, f);
+    ASSERT_EQ(fb.size(), model.bodies().size());
+    for (const FreeBody& b : fb) {
+      Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+      double moment = 0.0, scale = 1.0;
+      for (const BodyForce& x : b.forces) {
+        sum += x.force;
+        moment += x.moment + cross(x.at, x.force);  // about the ground origin
+        scale = std::max(scale, x.force.norm());
+      }
+      EXPECT_LT(sum.norm(), 1e-9 * scale) << b.name;
+      EXPECT_LT(std::abs(moment), 1e-9 * scale) << b.name;
+    }
+  }
+}
+
 // A revolute's reaction balances the forces on a free body: on the massless crank, the force
 // from the ground plus the force from the coupler plus the driving torque's zero resultant.
 TEST(Kinetostatics, ReactionsBalanceEveryBody) {

@@ -63,7 +63,7 @@ TEST(ElementType, ErrorsArePlacedAtTheirKey) {
 }
 
 TEST(ElementType, TheJointTypesAreBuiltIn) {
-  EXPECT_EQ(builtin_joint_types(), (std::vector<std::string>{"revolute", "prismatic", "pin_in_slot"}));
+  EXPECT_EQ(builtin_joint_types(), (std::vector<std::string>{"revolute", "prismatic", "pin_in_slot", "contact"}));
 }
 
 }  // namespace

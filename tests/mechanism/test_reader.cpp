@@ -104,5 +104,62 @@ TEST(MechanismYaml, ErrorsNameFileLineAndColumn) {
             std::string::npos);
 }
 
+// Friction keys, contacts (side from the drawing or given), point drivers, given efforts with
+// unknown loads and the course's output conventions.
+TEST(MechanismYaml, FrictionContactsPointDriversAndConventions) {
+  const std::string text = with(with(with(kSliderCrank,
+      "  - {name: cyl, type: prismatic, slider: piston.B, guide: ground.O, axis: 0 deg}",
+      "  - {name: cyl, type: prismatic, slider: piston.B, guide: ground.O, axis: 0 deg, friction: 0.1, length: 40}\n"
+      "  - {name: roll, type: contact, circle: crank.A, radius: 10, line: ground.T, axis: 0 deg, friction: 0.2}"),
+      "  O: [0, 0]\n", "  O: [0, 0]\n  T: [0, 80]\n"),
+      "  - {name: x, type: slider, joint: cyl}",
+      "  - {name: x, type: slider, joint: cyl}\n"
+      "  - {name: xa, type: x, point: crank.A, from: piston.B}\n"
+      "  - {name: phi, type: angle, along: [rod.B, rod.A], clockwise: true, zero: 90 deg}\n"
+      "  - {name: v, type: speed, point: rod.B}\n"
+      "  - {name: a, type: acceleration, point: rod.B}");
+  const Mechanism m = read(text);
+  ASSERT_EQ(m.model.frictions().size(), 2u);
+  EXPECT_NEAR(m.model.frictions()[0].mu, 0.1, 1e-15);
+  EXPECT_NEAR(m.model.frictions()[0].length, 0.040, 1e-15);
+  const auto* contact = dynamic_cast<const kin::Contact*>(m.model.constraints()[*m.model.constraint_index("roll")].constraint.get());
+  ASSERT_NE(contact, nullptr);
+  EXPECT_EQ(contact->side(), -1);  // A is drawn below the line y = 80 mm
+  EXPECT_NEAR(contact->radius(), 0.010, 1e-15);
+  ASSERT_EQ(m.outputs.size(), 5u);
+  ASSERT_TRUE(m.outputs[1].from);
+  EXPECT_EQ(m.outputs[1].from->body, 2);
+  EXPECT_EQ(m.outputs[2].sense, -1);
+  EXPECT_NEAR(m.outputs[2].zero, M_PI / 2, 1e-15);
+  EXPECT_NEAR(m.outputs[2].offset, M_PI, 1e-15);  // B -> A along the rod's -x
+  EXPECT_EQ(m.outputs[3].kind, kin::OutputKind::point_speed);
+  EXPECT_EQ(m.outputs[4].kind, kin::OutputKind::point_acceleration);
+  // A point driver: A's height, its drawn value 50 sin 30 deg = 25 mm; an effort and an unknown load.
+  const Mechanism p = read(with(with(kSliderCrank,
+      "  - {name: in, type: angle, link: crank, speed: 600 rpm, range: [0, 180, 10]}",
+      "  - {name: in, type: point, point: crank.A, axis: 90 deg, speed: -2 m/s, effort: 3 N}"),
+      "  springs:", "  forces: [{name: F, at: piston.B, direction: 180 deg, unknown: true}]\n  springs:"));
+  EXPECT_NEAR(p.model.drivers()[0].value, 0.025, 1e-12);
+  EXPECT_EQ(p.model.drivers()[0].quantity, kin::DriverQuantity::displacement);
+  ASSERT_TRUE(p.model.drivers()[0].effort);
+  EXPECT_NEAR(*p.model.drivers()[0].effort, 3.0, 1e-15);
+  EXPECT_TRUE(p.model.forces()[0].unknown);
+  EXPECT_NEAR(p.model.forces()[0].force.x(), -1.0, 1e-15);
+  // Errors at the key.
+  EXPECT_NE(error_of(with(text, "friction: 0.1, length: 40", "friction: -0.1")).find("friction coefficient >= 0"), std::string::npos);
+  EXPECT_NE(error_of(with(kSliderCrank, "{name: O, type: revolute, at: [crank.O, ground.O]}",
+                          "{name: O, type: revolute, at: [crank.O, ground.O], friction: 0.1}")).find("journal radius"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(kSliderCrank, "{name: O, type: revolute, at: [crank.O, ground.O]}",
+                          "{name: O, type: revolute, at: [crank.O, ground.O], radius: 5}")).find("only with 'friction'"),
+            std::string::npos);
+  EXPECT_NE(error_of(with(text, "circle: crank.A, radius: 10, line: ground.T", "circle: crank.A, radius: 10, line: crank.O"))
+                .find("same link"), std::string::npos);
+  EXPECT_NE(error_of(with(with(text, "  T: [0, 80]", "  T: [0, 25]"), "radius: 10,", "radius: 0,")).find("side"), std::string::npos);
+  EXPECT_NE(error_of(with(kSliderCrank, "speed: 600 rpm,", "speed: 600 rpm, effort: 2 N*m,")).find("unknown load"), std::string::npos);
+  EXPECT_NE(error_of(with(kSliderCrank, "  springs:", "  forces: [{at: piston.B, direction: 0, unknown: true}]\n  springs:"))
+                .find("effort"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace gearkit::mechanism

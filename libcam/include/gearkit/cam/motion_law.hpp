@@ -37,6 +37,14 @@ std::optional<Law> law_from_name(std::string_view name);
 /// Every law name, for messages ("expected one of ...").
 std::vector<std::string> law_names();
 
+/// The law as a formula in the text `u` stands for (GiNaC's and most parsers' syntax: `Pi`, `^`,
+/// `sin`, `cos`), as course notes write it: y(u) and dy/du. nullopt for the laws pieced together
+/// (parabolic, modified trapezoid, modified sine), which have no single expression.
+struct LawFormula {
+  std::string y, dy;
+};
+std::optional<LawFormula> law_formula(Law law, std::string_view u);
+
 /// The values of u inside (0, 1) where the law is pieced together, so that a derivative may
 /// jump there: parabolic {1/2} (acceleration), modified trapezoid {1/8, 3/8, 5/8, 7/8} and
 /// modified sine {1/8, 7/8} (continuous up to the jerk, checked all the same); none for the

@@ -34,12 +34,20 @@ class GeometryError : public std::invalid_argument {
 };
 
 enum class Mounting { zero, v_zero, v };           ///< x1 = x2 = 0; x1 + x2 = 0; x1 + x2 != 0
-enum class ShiftSplit { user_x1, balanced_sliding, proportional };
+/// How the shift sum of a given centre distance is split: x1 given; balanced maximum specific
+/// sliding; proportional to the teeth; min_shift: the smallest shifts (x1 and x2 as equal as
+/// the sum allows, i.e. the least max |x_i|) that keep both gears above the undercut limit
+/// GearPairInput::undercut_limit.
+enum class ShiftSplit { user_x1, balanced_sliding, proportional, min_shift };
+/// Which undercut limit the min_shift split keeps: ISO x_min (no undercut by the rack with its
+/// tip radius) or the practical limit x'_min (slight undercut accepted, DIN 3960; course notes).
+enum class UndercutLimit { iso, practical };
 enum class ModuleSystem { normal, transverse };    ///< how `module` and `pressure_angle` are given
 
 /// "zero", "V-0", "V".
 const char* to_string(Mounting mounting);
 const char* to_string(ShiftSplit split);
+const char* to_string(UndercutLimit limit);  ///< "ISO", "practical"
 
 struct GearPairInput {
   int z1 = 0;                 ///< teeth of gear 1 (pinion), > 0
@@ -54,6 +62,7 @@ struct GearPairInput {
   double x1 = 0, x2 = 0;                 ///< profile shift coefficients, used if no centre distance
   std::optional<double> centre_distance; ///< mm, > 0; if set the shift sum follows from it
   ShiftSplit split = ShiftSplit::balanced_sliding;  ///< with centre_distance; user_x1 keeps x1
+  UndercutLimit undercut_limit = UndercutLimit::iso;  ///< the limit ShiftSplit::min_shift keeps
   bool apply_tip_shortening = true;
 
   double face_width = 0;       ///< mm, b >= 0 (overlap ratio; 0 gives eps_beta = 0)
@@ -77,6 +86,7 @@ struct GearResult {
   double s_an = 0;        ///< normal tooth thickness at the tip circle (nominal)
   double z_n = 0;         ///< virtual number of teeth
   double x_min = 0;       ///< undercut limit (external gears; NaN for a ring)
+  double x_min_practical = 0;  ///< practical undercut limit (DIN 3960, (14 - z)/17 at 20 deg; NaN for a ring)
   double d_Ff = 0;        ///< generated form (start of involute) diameter; NaN for a ring
   double A_sn = 0;        ///< normal thickness allowance used for measurements and backlash
   int k_span = 0;         ///< teeth spanned (0 for a ring: no span measurement)

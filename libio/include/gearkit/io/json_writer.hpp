@@ -58,6 +58,8 @@ class JsonWriter {
   void value(std::string_view s);
   void value(const char* s) { value(std::string_view(s)); }
   void null();
+  /// A value that is already JSON text (a small subtree dumped by nlohmann::json).
+  void raw_value(std::string_view json);
 
   /// Paths of the non-finite numbers written, each once, written as `prefix` then the keys
   /// joined by '.', array elements as "[]" ("positions[].q.crank.angle_deg").

@@ -74,6 +74,40 @@ class PinInSlot final : public Constraint {
   Eigen::Vector2d axis_;
 };
 
+/// Contact of a circle with a line (a roller, a drum or an edge on a flat face): the circle of
+/// radius `radius` [m] centred at point C of `circle` body touches the line through point Q of
+/// `line` body with direction `axis_local` (line body's frame), from the side `side` (+1: the
+/// side perp(axis) points to, -1 the other). 1 equation: side n.(C - Q) - radius = 0,
+/// n = perp(axis). A radius of 0 is a point or an edge on the line. The contact is kept closed
+/// (bilateral): the normal force N = -lambda pushes the circle away from the line when it is
+/// positive; a negative N means the contact would open (kinetostatics warns).
+/// reaction(): the normal force N side n on the circle body at the contact point C - side r n.
+class Contact final : public Constraint {
+ public:
+  /// @throws std::invalid_argument if radius < 0 or side is not +1 or -1.
+  Contact(BodyPoint circle, double radius, BodyPoint line, Eigen::Vector2d axis_local, int side);
+  std::string kind() const override { return "contact"; }
+  int equations() const override { return 1; }
+  std::vector<int> bodies() const override { return {circle_.body, line_.body}; }
+  void evaluate(const ConstraintInput& in, ConstraintOutput& out) const override;
+  Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const override;
+  const BodyPoint& circle() const { return circle_; }
+  const BodyPoint& line() const { return line_; }
+  const Eigen::Vector2d& axis_local() const { return axis_; }
+  double radius() const { return radius_; }
+  int side() const { return side_; }
+  /// The contact point [m] and the unit normal (from the line towards the circle) in the ground
+  /// frame for the states of the two bodies.
+  Eigen::Vector2d contact_point(const BodyState& circle, const BodyState& line) const;
+  Eigen::Vector2d normal(const BodyState& line) const;
+
+ private:
+  BodyPoint circle_, line_;
+  Eigen::Vector2d axis_;
+  double radius_;
+  int side_;
+};
+
 /// A prescribed motion f(t) = f0 + speed*t + acceleration*t^2/2, where f0 comes from the
 /// analysis (ConstraintInput::input) so that one model can be solved at many input values.
 struct Motion {

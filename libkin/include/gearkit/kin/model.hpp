@@ -46,20 +46,42 @@ struct Driver {
   int constraint = 0;           ///< index in Model::constraints()
   DriverQuantity quantity = DriverQuantity::angle;
   double value = 0.0;           ///< default f0 [rad or m]
+  /// The driving effort when it is given rather than computed (inverse kinetostatics): torque
+  /// [N m] or force [N] along the driven coordinate. Each given effort determines the magnitude
+  /// of one unknown load (PointForce::unknown, BodyTorque::unknown).
+  std::optional<double> effort;
 };
 
 /// A force [N] (ground frame) applied at a point of a body.
 struct PointForce {
   BodyPoint at;
+  /// The force [N]; for an unknown load the unit vector of its direction.
   Eigen::Vector2d force = Eigen::Vector2d::Zero();
   std::string name;
+  /// The magnitude along `force` is solved from the drivers' given efforts.
+  bool unknown = false;
 };
 
 /// A torque [N m] (counter-clockwise positive) applied to a body.
 struct BodyTorque {
   int body = 0;
-  double torque = 0.0;
+  double torque = 0.0;  ///< [N m]; 1 for an unknown load (the solved value is the torque)
   std::string name;
+  bool unknown = false;  ///< solved from the drivers' given efforts
+};
+
+/// Coulomb friction in a joint (kinetostatics only: positions and velocities are unaffected).
+/// The friction opposes the relative sliding or turning in the joint, with the magnitude
+/// mu |N| (prismatic, contact, pin in slot) or the couple rho |F| of the friction circle
+/// rho = radius sin(atan mu) (revolute), where N and F are the joint's reactions.
+struct JointFriction {
+  int constraint = 0;   ///< index in Model::constraints(): a Revolute, Prismatic, PinInSlot or Contact
+  double mu = 0.0;      ///< coefficient of friction, >= 0
+  double radius = 0.0;  ///< revolute: journal (pin) radius [m], > 0
+  /// prismatic: length [m] of the slider's bearing, centred on the slider point. When the
+  /// joint's moment M exceeds N length/2 the slider bears on both faces of the guide and the
+  /// friction is mu 2|M|/length; 0 ignores the moment (friction mu |N|).
+  double length = 0.0;
 };
 
 /// A linear spring between two points: tension F = stiffness * (L - free_length) + preload
@@ -82,6 +104,14 @@ class Model {
   /// Marks constraint `constraint` (a driver) with what it drives and its default value.
   void set_driver(int constraint, DriverQuantity quantity, double value);
 
+  /// Adds Coulomb friction to a joint. @throws std::invalid_argument if the constraint is not a
+  /// revolute, prismatic, pin in slot or contact, already has friction, mu < 0, or a revolute's
+  /// radius is not > 0 or a length is < 0.
+  void add_friction(JointFriction friction);
+  /// Gives driver `driver` (index in drivers()) a known effort [N m or N].
+  /// @throws std::invalid_argument if the index is out of range.
+  void set_driver_effort(int driver, double effort);
+
   void add_force(PointForce f) { forces_.push_back(std::move(f)); }
   void add_torque(BodyTorque t) { torques_.push_back(std::move(t)); }
   void add_spring(Spring s) { springs_.push_back(std::move(s)); }
@@ -97,6 +127,7 @@ class Model {
   const std::vector<PointForce>& forces() const { return forces_; }
   const std::vector<BodyTorque>& torques() const { return torques_; }
   const std::vector<Spring>& springs() const { return springs_; }
+  const std::vector<JointFriction>& frictions() const { return frictions_; }
   const Eigen::Vector2d& gravity() const { return gravity_; }
 
   int coordinates() const { return 3 * static_cast<int>(bodies_.size()); }
@@ -131,6 +162,7 @@ class Model {
   std::vector<PointForce> forces_;
   std::vector<BodyTorque> torques_;
   std::vector<Spring> springs_;
+  std::vector<JointFriction> frictions_;
   Eigen::Vector2d gravity_ = Eigen::Vector2d::Zero();
   int equations_ = 0;
   std::uint64_t revision_ = 0;
