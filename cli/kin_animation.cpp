@@ -20,18 +20,19 @@ Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector
   return kin::Model::point_position(q, {body, local});
 }
 
-}  // namespace
-
-std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis, std::optional<double> input_speed) {
-  const kin::Model& m = mech.model;
-  // At most 240 frames: the browser interpolates between them.
+// At most 240 frames: the browser interpolates between them.
+std::vector<const KinPosition*> select_frames(const KinAnalysis& analysis) {
   std::vector<const KinPosition*> frames;
   const std::size_t n = analysis.positions.size();
   const std::size_t stride = std::max<std::size_t>(1, (n + 239) / 240);
   for (std::size_t i = 0; i < n; i += stride) frames.push_back(&analysis.positions[i]);
   if (n > 0 && frames.back() != &analysis.positions.back()) frames.push_back(&analysis.positions.back());
+  return frames;
+}
 
-  // Bounding box over every frame (mm), y flipped for SVG.
+// The viewport over every frame's points (mm), with a margin for slider guides and names;
+// `w`, `h`: its size in SVG units.
+AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPosition*>& frames, double& w, double& h) {
   double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
   auto grow = [&](const Eigen::Vector2d& p) {
     x0 = std::min(x0, p.x());
@@ -45,15 +46,66 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
       for (const auto& [name, local] : m.bodies()[b].points) grow(point_at(f->q, static_cast<int>(b), local));
   if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
   const double span = std::max({x1 - x0, y1 - y0, 1e-3});
-  const double margin = 0.14 * span;  // room for slider guides and names
+  const double margin = 0.14 * span;
   const double scale = 1000.0;  // m -> mm in the drawing's units
-  const double w = (x1 - x0 + 2 * margin) * scale, h = (y1 - y0 + 2 * margin) * scale;
-  const double stroke = span * scale / 150.0;
-  auto X = [&](double x) { return (x - x0 + margin) * scale; };
-  auto Y = [&](double y) { return (y1 - y + margin) * scale; };
+  w = (x1 - x0 + 2 * margin) * scale;
+  h = (y1 - y0 + 2 * margin) * scale;
+  return AnimationCanvas{x0, y1, margin, scale, span * scale / 150.0};
+}
+
+std::string animate(const char* attribute, double duration, const std::vector<std::string>& values) {
+  if (values.size() < 2) return {};
+  return fmt::format("<animate attributeName=\"{}\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n", attribute,
+                     duration, fmt::join(values, ";"));
+}
+
+// One link: its outline through its points (a polygon from three points), then its joints.
+std::string body_svg(const kin::Model& m, std::size_t b, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                     double duration) {
+  static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  const kin::Body& body = m.bodies()[b];
+  std::vector<std::string> values;
+  for (const KinPosition* f : frames) {
+    std::string pts;
+    for (const auto& [name, local] : body.points) {
+      const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
+      pts += fmt::format("{:.3f},{:.3f} ", c.X(p.x()), c.Y(p.y()));
+    }
+    values.push_back(pts);
+  }
+  if (values.empty()) return {};
+  const char* color = palette[b % std::size(palette)];
+  const bool closed = body.points.size() >= 3;
+  std::string svg = fmt::format("<{} points=\"{}\" fill=\"{}\" fill-opacity=\"0.25\" stroke=\"{}\" stroke-width=\"{:.3f}\" "
+                                "stroke-linejoin=\"round\" stroke-linecap=\"round\"><title>{}</title>\n",
+                                closed ? "polygon" : "polyline", values.front(), closed ? color : "none", color, c.stroke,
+                                io::xml_escape(body.name));
+  svg += animate("points", duration, values);
+  svg += closed ? "</polygon>\n" : "</polyline>\n";
+  for (const auto& [name, local] : body.points) {
+    std::vector<std::string> cx, cy;
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
+      cx.push_back(fmt::format("{:.3f}", c.X(p.x())));
+      cy.push_back(fmt::format("{:.3f}", c.Y(p.y())));
+    }
+    svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"white\" stroke=\"black\" stroke-width=\"{:.3f}\"><title>{}.{}</title>\n",
+                       cx.front(), cy.front(), 1.2 * c.stroke, 0.4 * c.stroke, io::xml_escape(body.name), io::xml_escape(name));
+    svg += animate("cx", duration, cx) + animate("cy", duration, cy) + "</circle>\n";
+  }
+  return svg;
+}
+
+}  // namespace
+
+std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis, std::optional<double> input_speed) {
+  const kin::Model& m = mech.model;
+  const std::vector<const KinPosition*> frames = select_frames(analysis);
+  double w = 0, h = 0;
+  const AnimationCanvas canvas = canvas_of(m, frames, w, h);
+  const double stroke = canvas.stroke;
   std::string loop_text;
   const double duration = loop_seconds(analysis, input_speed, frames.size(), loop_text);
-  const AnimationCanvas canvas{x0, y1, margin, scale, stroke};
 
   std::string svg = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -61,55 +113,15 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
       "<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       w, h, 800.0 * h / w, io::xml_escape(mech.title), io::xml_escape(loop_text));
   svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration);
-  static const char* palette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
   for (const auto& [name, p] : m.ground().points) {
-    const double s = 3 * stroke;
+    const double s = 3 * stroke, x = canvas.X(p.x()), y = canvas.Y(p.y());
     svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",
-                       X(p.x()), Y(p.y()), X(p.x()) - s, Y(p.y()) + 1.7 * s, X(p.x()) + s, Y(p.y()) + 1.7 * s, io::xml_escape(name));
+                       x, y, x - s, y + 1.7 * s, x + s, y + 1.7 * s, io::xml_escape(name));
   }
-  for (std::size_t b = 0; b < m.bodies().size(); ++b) {
-    const kin::Body& body = m.bodies()[b];
-    std::vector<std::string> values;
-    for (const KinPosition* f : frames) {
-      std::string pts;
-      for (const auto& [name, local] : body.points) {
-        const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
-        pts += fmt::format("{:.3f},{:.3f} ", X(p.x()), Y(p.y()));
-      }
-      values.push_back(pts);
-    }
-    if (values.empty()) continue;
-    const char* color = palette[b % std::size(palette)];
-    const bool closed = body.points.size() >= 3;
-    svg += fmt::format("<{} points=\"{}\" fill=\"{}\" fill-opacity=\"0.25\" stroke=\"{}\" stroke-width=\"{:.3f}\" "
-                       "stroke-linejoin=\"round\" stroke-linecap=\"round\"><title>{}</title>\n",
-                       closed ? "polygon" : "polyline", values.front(), closed ? color : "none", color, stroke, io::xml_escape(body.name));
-    if (values.size() > 1)
-      svg += fmt::format("<animate attributeName=\"points\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
-                         duration, fmt::join(values, ";"));
-    svg += closed ? "</polygon>\n" : "</polyline>\n";
-    for (const auto& [name, local] : body.points) {
-      std::vector<std::string> cx, cy;
-      for (const KinPosition* f : frames) {
-        const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
-        cx.push_back(fmt::format("{:.3f}", X(p.x())));
-        cy.push_back(fmt::format("{:.3f}", Y(p.y())));
-      }
-      svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"white\" stroke=\"black\" stroke-width=\"{:.3f}\"><title>{}.{}</title>\n",
-                         cx.front(), cy.front(), 1.2 * stroke, 0.4 * stroke, io::xml_escape(body.name), io::xml_escape(name));
-      if (cx.size() > 1) {
-        svg += fmt::format("<animate attributeName=\"cx\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
-                           duration, fmt::join(cx, ";"));
-        svg += fmt::format("<animate attributeName=\"cy\" dur=\"{:.2f}s\" repeatCount=\"indefinite\" values=\"{}\"/>\n",
-                           duration, fmt::join(cy, ";"));
-      }
-      svg += "</circle>\n";
-    }
-  }
+  for (std::size_t b = 0; b < m.bodies().size(); ++b) svg += body_svg(m, b, frames, canvas, duration);
   svg += name_labels(m, frames, canvas, duration);
   svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n",
-                     2 * stroke, h - 2 * stroke,
-                     4.5 * stroke, io::xml_escape(loop_text));
+                     2 * stroke, h - 2 * stroke, 4.5 * stroke, io::xml_escape(loop_text));
   svg += "</svg>\n";
   return svg;
 }

@@ -137,6 +137,22 @@ class Reader {
     }
   }
 
+  // A moving link pinned at two differently named points that coincide has zero length: the
+  // mechanism it belongs to is degenerate (a zero-length crank turns without moving anything, and
+  // the Grashof classification would call it a crank). One point shared by several joints (a
+  // compound pin) is fine.
+  void check_link_length(const BodyPoint& p, const YAML::Node& ref) {
+    if (p.body == kGround) return;
+    const std::string text = scalar(ref, doc_.file, "a point reference 'link.point'");
+    for (const auto& [local, other] : pins_[p.body]) {
+      if (other == text || (local - p.local).norm() > 1e-9) continue;
+      const std::string& link = mech_.model.bodies()[static_cast<std::size_t>(p.body)].name;
+      fail(ref, fmt::format("link '{}' has zero length: its pins {} and {} are at the same point; give the link its "
+                            "length, or use one point for a pin shared by several links", link, other, text));
+    }
+    pins_[p.body].emplace_back(p.local, text);
+  }
+
   // "link.point" -> body and local coordinates.
   BodyPoint point_ref(const YAML::Node& node) const {
     return resolve_point(mech_.model, scalar(node, doc_.file, "a point reference 'link.point'"), mark_of(node, doc_.file));
@@ -173,6 +189,8 @@ class Reader {
       if (at.size() != 2) fail(j.node("at"), "expected 'at' as two point references [link.P, other.P]");
       const BodyPoint a = point_ref(at[0]), b = point_ref(at[1]);
       if (a.body == b.body) fail(j.node("at"), "a revolute joint needs two different links");
+      check_link_length(a, at[0]);
+      check_link_length(b, at[1]);
       add(name, std::make_shared<kin::Revolute>(a, b), node);
       revolutes_.push_back({a, b});
     } else if (type == "contact") {
@@ -523,6 +541,7 @@ class Reader {
   std::vector<YAML::Node> link_nodes_;
   std::set<int> placed_;
   std::vector<std::pair<BodyPoint, BodyPoint>> revolutes_;
+  std::map<int, std::vector<std::pair<Eigen::Vector2d, std::string>>> pins_;  // per link: pin points and their references
   struct PrismaticInfo {
     BodyPoint slider, guide;
     Eigen::Vector2d axis;

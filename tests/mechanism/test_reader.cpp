@@ -104,6 +104,20 @@ TEST(MechanismYaml, ErrorsNameFileLineAndColumn) {
             std::string::npos);
 }
 
+// A crank whose two pins coincide has zero length (issue 13 item 3): Grashof would call the
+// four-bar a crank-rocker whose rocker never moves. Refused at the second pin's reference; one
+// point shared by two joints (a compound pin) stays allowed.
+TEST(MechanismYaml, AZeroLengthLinkIsRefusedNamingIt) {
+  const std::string zero = with(kSliderCrank, "A: [0.05 m, 0]", "A: [0, 0]");
+  const std::string e = error_of(zero);
+  EXPECT_EQ(e.rfind("m.yaml:17:", 0), 0u) << e;  // the joint A line: crank.A is the second pin
+  EXPECT_NE(e.find("link 'crank' has zero length: its pins crank.O and crank.A are at the same point"), std::string::npos) << e;
+  // rod.B pinned twice at one point (the piston and a spring-loaded arm, say): not degenerate.
+  const std::string compound = with(with(kSliderCrank, "  piston:\n", "  arm:\n    points: {B: [0, 0], C: [30, 0]}\n  piston:\n"),
+                                    "  - {name: cyl,", "  - {name: B2, type: revolute, at: [rod.B, arm.B]}\n  - {name: cyl,");
+  EXPECT_EQ(error_of(compound).find("zero length"), std::string::npos) << error_of(compound);
+}
+
 // Friction keys, contacts (side from the drawing or given), point drivers, given efforts with
 // unknown loads and the course's output conventions.
 TEST(MechanismYaml, FrictionContactsPointDriversAndConventions) {
