@@ -37,11 +37,58 @@ bool continue_from_drawing(const mechanism::Mechanism& mech, kin::Data& data, in
     data.q = s.samples.back().q;
     return true;
   }
+  if (s.assembled) a.dead_points.push_back(s.dead_points.front());  // the limit in the way is a dead point too
   a.warnings.push_back(s.assembled ? fmt::format("cannot reach input {} from the drawn configuration ({}): dead point at {:.6f} {}",
                                                  shown(mech, driver, value), shown(mech, driver, drawn),
                                                  shown_input(mech, driver, s.dead_points.front().input), input_unit(mech, driver))
                                    : fmt::format("cannot assemble at the drawn input {}: {}", shown(mech, driver, drawn), s.message));
   return false;
+}
+
+// The sweep's start cannot be assembled: the first input of its grid that the drawn configuration
+// reaches by continuation, with `data` assembled there, or nullopt when none is (a warning says
+// why). The limit found on the way towards the start is a dead point of the analysis.
+std::optional<double> reachable_start(const mechanism::Mechanism& mech, kin::Data& data, int driver,
+                                      const mechanism::DriverRange& range, KinAnalysis& a) {
+  const double drawn = data.inputs(driver);
+  const Eigen::VectorXd drawn_q = data.q;
+  kin::SweepOptions o;
+  o.driver = driver;
+  o.start = drawn;
+  o.end = range.start;
+  o.step = range.step;
+  o.velocities = false;
+  o.min_step = 1e-9 * std::max(1.0, std::abs(range.start - drawn));
+  const kin::SweepResult s = kin::sweep(mech.model, data, o);
+  if (!s.assembled) {
+    a.warnings.push_back(fmt::format("cannot assemble at the drawn input {}: {}", shown(mech, driver, drawn), s.message));
+    return std::nullopt;
+  }
+  if (s.complete) {  // reachable: Newton from the drawing alone had not found it
+    data.q = s.samples.back().q;
+    data.inputs(driver) = range.start;
+    return range.start;
+  }
+  const kin::DeadPoint& limit = s.dead_points.front();
+  a.dead_points.push_back(limit);
+  const double direction = range.end >= range.start ? 1.0 : -1.0;
+  const double k = std::ceil((limit.input - range.start) * direction / range.step - 1e-9);
+  const double start = range.start + direction * std::max(0.0, k) * range.step;
+  // The limit lies between the drawing and the start: the grid goes on past it only when the
+  // drawing is ahead of the start in the sweep's direction, and then up to the end at most.
+  if ((drawn - range.start) * direction <= 0.0 || (start - range.end) * direction > 1e-9 * range.step) {
+    a.warnings.push_back(fmt::format("no input of the sweep {} .. {} is reachable from the drawn configuration ({}): "
+                                     "dead point at {}", shown(mech, driver, range.start), shown(mech, driver, range.end),
+                                     shown(mech, driver, drawn), shown(mech, driver, limit.input)));
+    return std::nullopt;
+  }
+  data.q = drawn_q;
+  data.inputs(driver) = drawn;
+  if (!continue_from_drawing(mech, data, driver, start, a)) return std::nullopt;
+  a.warnings.push_back(fmt::format("the sweep's start {} is not reachable from the drawn configuration ({}): dead point "
+                                   "at {}; swept from {} (inputs before it were not reached)", shown(mech, driver, range.start),
+                                   shown(mech, driver, drawn), shown(mech, driver, limit.input), shown(mech, driver, start)));
+  return start;
 }
 
 }  // namespace
@@ -112,7 +159,7 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   std::size_t done = 0;
   kin::SweepResult s;
   const bool loads = m.has_loads();
-  kin::sweep(m, data, o, s, [&](const kin::SweepSample& sample) {
+  const auto visit = [&](const kin::SweepSample& sample) {
     progress.update(done++);
     probe.q = sample.q;
     probe.inputs(driver) = sample.input;
@@ -124,15 +171,37 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
     }
     describe_position(mech, four_bar, probe, driver, sample.input, &sample.dq, p);
     sink(p);
-  });
-  if (!s.assembled)
-    a.warnings.push_back(fmt::format("cannot assemble at the sweep's start {}: {}", shown(mech, driver, range.start), s.message));
-  a.dead_points = s.dead_points;
+  };
+  const Eigen::VectorXd drawn_q = data.q;
+  const double drawn = data.inputs(driver);
+  kin::sweep(m, data, o, s, visit);
+  if (!s.assembled) {
+    // Not at the start: sweep from the first input the drawing reaches (a double rocker's input
+    // between its limits), naming the limit as a dead point.
+    data.q = drawn_q;
+    data.inputs(driver) = drawn;
+    if (const std::optional<double> start = reachable_start(mech, data, driver, range, a)) {
+      o.start = *start;
+      kin::sweep(m, data, o, s, visit);
+    }
+  }
+  a.dead_points.insert(a.dead_points.end(), s.dead_points.begin(), s.dead_points.end());
   a.extremes = s.extremes;
+  // A four-bar with s + l = p + q stops where it flattens: two branches cross there (a change
+  // point), and the sweep does not choose one; the driver could move it on.
+  bool change_point = false;
+  if (four_bar)
+    change_point = kin::grashof(four_bar->ground, four_bar->crank_length, four_bar->coupler_length,
+                                four_bar->rocker_length).kind == kin::GrashofClass::change_point;
   for (const kin::DeadPoint& d : s.dead_points)
-    a.warnings.push_back(fmt::format("dead point at input {:.6f} {}: the driver cannot move the mechanism past it; "
-                                     "the sweep stops there instead of jumping to another assembly branch",
-                                     shown_input(mech, driver, d.input), input_unit(mech, driver)));
+    a.warnings.push_back(
+        change_point
+            ? fmt::format("change point at input {:.6f} {}: the four-bar lies flat and two branches cross (s + l = p + q); "
+                          "the sweep stops there rather than choose one (sweep on from a drawing past it)",
+                          shown_input(mech, driver, d.input), input_unit(mech, driver))
+            : fmt::format("dead point at input {:.6f} {}: the driver cannot move the mechanism past it; "
+                          "the sweep stops there instead of jumping to another assembly branch",
+                          shown_input(mech, driver, d.input), input_unit(mech, driver)));
   return a;
 }
 

@@ -216,7 +216,8 @@ void dead_points_section(const mechanism::Mechanism& mech, const KinAnalysis& a,
   const kin::Model& m = mech.model;
   nlohmann::json dead = nlohmann::json::array();
   if (!a.dead_points.empty()) {
-    io::Table d{"Dead points", {fmt::format("input [{}]", input_unit(mech, a.driver))}, {}};
+    // The input column is named after its driver: a link called "input" must not repeat it.
+    io::Table d{"Dead points", {fmt::format("{} [{}]", mech.drivers[static_cast<std::size_t>(a.driver)].name, input_unit(mech, a.driver))}, {}};
     for (const kin::Body& b : m.bodies()) d.header.push_back(b.name + " [deg]");
     for (const kin::DeadPoint& dp : a.dead_points) {
       std::vector<std::string> row{io::fixed(shown_input(mech, a.driver, dp.input), 6)};

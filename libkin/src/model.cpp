@@ -32,7 +32,7 @@ int Model::add_constraint(std::string name, std::shared_ptr<const Constraint> co
   constraints_.push_back({std::move(name), std::move(constraint), equations_});
   equations_ += rows;
   const int index = static_cast<int>(constraints_.size()) - 1;
-  if (driver) drivers_.push_back({index, DriverQuantity::angle, 0.0});
+  if (driver) drivers_.push_back({index, DriverQuantity::angle, 0.0, std::nullopt});
   ++revision_;
   return index;
 }

@@ -180,6 +180,91 @@ TEST(KinCommand, DeadPointInASweepIsAWarning) {
   EXPECT_EQ(run_gearkit("kin " + shell_quote(file) + " --strict").status, 3);
 }
 
+// A Grashof double rocker (ground 100, input 80, coupler 40, output 90 mm: the coupler is the
+// shortest link). The input stops where coupler and output rocker are in line, |A O4| = 90 + 40
+// or 90 - 40 mm: with |A O4|^2 = 80^2 + 100^2 - 2 80 100 cos(theta2), theta2 = acos(-500/16000)
+// = 91.790 deg and acos(13900/16000) = 29.685 deg (law of cosines; issue 13 item 3).
+const char* kDoubleRocker = R"(mechanism: double rocker
+ground: {O2: [0, 0], O4: [100, 0]}
+links:
+  input: {points: {O2: [0, 0], A: [80, 0]}, angle: 60 deg}
+  coupler: {points: {A: [0, 0], B: [40, 0]}, angle: 26 deg}
+  output: {points: {O4: [0, 0], B: [90, 0]}, angle: 105 deg}
+joints:
+  - {name: O2, type: revolute, at: [input.O2, ground.O2]}
+  - {name: A, type: revolute, at: [input.A, coupler.A]}
+  - {name: B, type: revolute, at: [coupler.B, output.B]}
+  - {name: O4, type: revolute, at: [output.O4, ground.O4]}
+drivers:
+  - {name: theta2, type: angle, link: input}
+)";
+
+TEST(KinCommand, AnUnreachableSweepStartSweepsTheReachableRange) {
+  const double lower = std::acos(13900.0 / 16000.0) * 180 / M_PI, upper = std::acos(-500.0 / 16000.0) * 180 / M_PI;
+  const std::string file = write(scratch_dir("kin-double-rocker"), "double_rocker.yaml", kDoubleRocker);
+  // The grid's inputs 30 .. 91 deg, then perhaps the last configuration reached at the dead point.
+  const auto expect_inputs = [](const nlohmann::json& positions, double first, double last, double limit) {
+    const double step = last > first ? 1.0 : -1.0;
+    const auto grid = static_cast<std::size_t>(std::abs(last - first)) + 1;
+    ASSERT_TRUE(positions.size() == grid || positions.size() == grid + 1) << positions.size();
+    for (std::size_t k = 0; k < grid; ++k)
+      EXPECT_NEAR(positions[k]["input_deg"].get<double>(), first + step * static_cast<double>(k), 1e-9) << k;
+    if (positions.size() > grid) EXPECT_NEAR(positions[grid]["input_deg"].get<double>(), limit, 1e-4);
+  };
+  const auto j = run_json(shell_quote(file) + " --sweep 0:120:1");
+  expect_inputs(j["positions"], 30, 91, upper);
+  ASSERT_EQ(j["dead_points"].size(), 2u);
+  EXPECT_NEAR(j["dead_points"][0]["input_deg"].get<double>(), lower, 1e-4);
+  EXPECT_NEAR(j["dead_points"][1]["input_deg"].get<double>(), upper, 1e-4);
+  bool said = false;
+  for (const auto& w : j["warnings"]) said = said || w.get<std::string>().find("start 0 deg is not reachable") != std::string::npos;
+  EXPECT_TRUE(said) << j["warnings"];
+  // Swept the other way the limits come in the other order.
+  const auto back = run_json(shell_quote(file) + " --sweep 120:0:1");
+  expect_inputs(back["positions"], 91, 30, lower);
+  EXPECT_NEAR(back["dead_points"][0]["input_deg"].get<double>(), upper, 1e-4);
+  // A range wholly beyond a limit: no position, the limit named.
+  const auto none = run_json(shell_quote(file) + " --sweep 0:20:1");
+  EXPECT_TRUE(none["positions"].empty());
+  ASSERT_EQ(none["dead_points"].size(), 1u);
+  EXPECT_NEAR(none["dead_points"][0]["input_deg"].get<double>(), lower, 1e-4);
+  // An unreachable --at names its dead point in dead_points[] too, not only in the warnings.
+  const auto at = run_json(shell_quote(file) + " --at 10");
+  EXPECT_TRUE(at["positions"].empty());
+  ASSERT_EQ(at["dead_points"].size(), 1u);
+  EXPECT_NEAR(at["dead_points"][0]["input_deg"].get<double>(), lower, 1e-4);
+}
+
+// A parallelogram four-bar (40/100/40/100 mm): on the drawn branch the rocker stays parallel to
+// the crank, theta4 = theta2 exactly, up to 180 deg where all links lie flat and the
+// anti-parallelogram branch crosses. The sweep stops there and says it is a change point, not a
+// dead point the driver cannot pass (issue 13 item 3; crossing it is still to come).
+TEST(KinCommand, AParallelogramStopsAtItsChangePointSayingSo) {
+  const std::string file = write(scratch_dir("kin-parallelogram"), "parallelogram.yaml", R"(mechanism: parallelogram
+ground: {O2: [0, 0], O4: [100, 0]}
+links:
+  crank: {points: {O2: [0, 0], A: [40, 0]}, angle: 40 deg}
+  coupler: {points: {A: [0, 0], B: [100, 0]}, angle: 0 deg}
+  rocker: {points: {O4: [0, 0], B: [40, 0]}, angle: 40 deg}
+joints:
+  - {name: O2, type: revolute, at: [crank.O2, ground.O2]}
+  - {name: A, type: revolute, at: [crank.A, coupler.A]}
+  - {name: B, type: revolute, at: [coupler.B, rocker.B]}
+  - {name: O4, type: revolute, at: [rocker.O4, ground.O4]}
+drivers:
+  - {name: theta2, type: angle, link: crank}
+)");
+  const auto j = run_json(shell_quote(file) + " --sweep 10:350:10");
+  ASSERT_GE(j["positions"].size(), 17u);
+  for (const auto& p : j["positions"]) {
+    EXPECT_NEAR(p["q"]["rocker.angle_deg"].get<double>(), p["input_deg"].get<double>(), 1e-6);
+    EXPECT_NEAR(p["q"]["coupler.angle_deg"].get<double>(), 0.0, 1e-6);
+  }
+  ASSERT_EQ(j["dead_points"].size(), 1u);
+  EXPECT_NEAR(j["dead_points"][0]["input_deg"].get<double>(), 180.0, 1e-4);
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("change point at input"), std::string::npos) << j["warnings"];
+}
+
 TEST(KinCommand, CannotAssembleIsAWarning) {
   const auto r = run_gearkit("kin " + shell_quote(kExamples + "pantograph.yaml") + " --driver phi1 --at 60 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
