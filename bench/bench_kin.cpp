@@ -6,6 +6,7 @@
 //    own convergence tolerance (1e-8 mm); gearkit runs at 1e-11 m = 1e-8 mm for parity;
 //  - a chain of N coupled four-bars (each rocker is the next crank), N = 1, 10, 100, 1000, swept
 //    like the four-bar: time per position grows linearly with N thanks to the sparse LU (KLU).
+#include <gearkit/kin/dof.hpp>
 #include <gearkit/kin/model.hpp>
 #include <gearkit/kin/solve.hpp>
 #include <gearkit/kin/sweep.hpp>
@@ -169,6 +170,25 @@ void BM_FourBarChain(benchmark::State& state) {
   state.counters["coordinates"] = m.coordinates();
 }
 BENCHMARK(BM_FourBarChain)->Arg(1)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// The mobility and redundancy analysis (kin::dof: Gruebler, rank of Phi_q by SuiteSparseQR,
+// redundant rows) of a chain of N four-bars at its assembled start, as `gearkit kin` runs it once
+// per model (issue 13 item 2: near-linear in N up to 10,000 loops).
+void BM_ChainDof(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Model m = chain(n);
+  Data data(m);
+  solve_position(m, data, 0.0);
+  for (auto _ : state) {
+    const DofReport r = dof(m, data);
+    if (r.dof != 1) state.SkipWithError("a chain of four-bars has one degree of freedom");
+    benchmark::DoNotOptimize(r.rank);
+  }
+  state.counters["coordinates"] = m.coordinates();
+  state.counters["us_per_loop"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ChainDof)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
