@@ -37,6 +37,7 @@ void KinPlot::add(const KinPosition& p) {
 std::string KinPlot::svg(std::vector<io::PlotMark> marks) const {
   io::Plot plot;
   plot.marks = std::move(marks);
+  plot.x_reversed = x_last_ < x_first_;  // a clockwise sweep reads left to right as swept
   plot.title = mech_.title;
   plot.x_label = fmt::format("{} [{}]", mech_.drivers[static_cast<std::size_t>(driver_)].name, input_unit(mech_, driver_));
   for (std::size_t k = 0; k < outputs_.size(); ++k) {

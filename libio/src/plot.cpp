@@ -122,7 +122,11 @@ struct Layout {
   AxisTicks x;
   std::vector<Panel> panels;
   std::vector<Rect> legends;  // per panel
-  double X(double v) const { return f.left + (v - x.lo) / (x.hi - x.lo) * f.plot_w(); }
+  bool x_reversed = false;
+  double X(double v) const {
+    const double t = (v - x.lo) / (x.hi - x.lo);
+    return f.left + (x_reversed ? 1.0 - t : t) * f.plot_w();
+  }
 };
 
 // Everything drawn inside a panel that a legend must not cover, in pixels.
@@ -171,6 +175,7 @@ Layout make_layout(const Plot& plot, double right) {
   for (const PlotMark& m : plot.marks) xr.add(m.x);
   xr = padded(xr);
   L.x = axis_ticks(xr.lo, xr.hi, 8, degrees(plot.x_scale, plot.x_label) ? AxisScale::degrees : AxisScale::linear, false);
+  L.x_reversed = plot.x_reversed;
   for (std::size_t i = 0; i < plot.panels.size(); ++i) {
     const PlotPanel& p = plot.panels[i];
     Range yr;

@@ -184,3 +184,25 @@ TEST(PlotMarks, AMarkIsALineAtItsXWithItsNote) {
   // Through both panels: from above the first to the bottom of the second.
   EXPECT_GT(attribute(svg, "class=\"mark\"", "y2") - attribute(svg, "class=\"mark\"", "y1"), 2 * p.panel_height_px);
 }
+
+// A clockwise sweep (input 0 down to -360 deg) reads left to right as swept: 0 at the left edge,
+// -360 at the right (issue 13 item 4); the same data unreversed put -360 at the left.
+TEST(PlotAxes, AReversedXAxisPutsTheSweepsStartAtTheLeft) {
+  Plot p;
+  p.x_label = "theta2 [deg]";
+  PlotPanel panel{"theta4 [deg]", {}, {}};
+  panel.series.push_back({"theta4", {0, -90, -180, -270, -360}, {60, 40, 20, 40, 60}, ""});
+  p.panels.push_back(panel);
+  const auto tick_x = [](const std::string& svg, const std::string& label) {
+    const std::size_t at = svg.find(">" + label + "</text>");
+    EXPECT_NE(at, std::string::npos) << label;
+    return attribute(svg, "<text", "x", svg.rfind("<text", at));
+  };
+  const std::string normal = to_svg(p);
+  EXPECT_LT(tick_x(normal, "-360"), tick_x(normal, "0"));
+  p.x_reversed = true;
+  const std::string reversed = to_svg(p);
+  EXPECT_GT(tick_x(reversed, "-360"), tick_x(reversed, "0"));
+  // The first point of the series (x = 0) is drawn at the left end of the line.
+  EXPECT_NEAR(tick_x(reversed, "0"), tick_x(normal, "-360"), 0.01);
+}

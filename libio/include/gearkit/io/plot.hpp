@@ -50,6 +50,9 @@ struct Plot {
   double panel_height_px = 220;
   std::vector<PlotMark> marks = {};
   AxisScale x_scale = AxisScale::automatic;
+  /// The x axis grows to the left: a sweep that runs to decreasing values (a clockwise input)
+  /// reads left to right in the order it was swept.
+  bool x_reversed = false;
 };
 
 /// Ticks of an axis over [lo, hi] (about `target` of them) and their labels.
