@@ -209,7 +209,9 @@ TEST(KinCommand, AnUnreachableSweepStartSweepsTheReachableRange) {
     ASSERT_TRUE(positions.size() == grid || positions.size() == grid + 1) << positions.size();
     for (std::size_t k = 0; k < grid; ++k)
       EXPECT_NEAR(positions[k]["input_deg"].get<double>(), first + step * static_cast<double>(k), 1e-9) << k;
-    if (positions.size() > grid) EXPECT_NEAR(positions[grid]["input_deg"].get<double>(), limit, 1e-4);
+    if (positions.size() > grid) {
+      EXPECT_NEAR(positions[grid]["input_deg"].get<double>(), limit, 1e-4);
+    }
   };
   const auto j = run_json(shell_quote(file) + " --sweep 0:120:1");
   expect_inputs(j["positions"], 30, 91, upper);
