@@ -540,6 +540,9 @@ def null_path(node, path=""):
         return None if any(p.search(path) for p in DOCUMENTED_NULLS) else (path or "(document)")
     items = node.items() if isinstance(node, dict) else enumerate(node) if isinstance(node, list) else []
     for k, v in items:
+        # docs/rating.md: a life is null with life_unlimited: true (the stress below the knee).
+        if v is None and isinstance(node, dict) and k in ("life_h", "life_H_h", "life_F_h") and node.get("life_unlimited") is True:
+            continue
         found = null_path(v, f"{path}.{k}" if isinstance(node, dict) else f"{path}[{k}]")
         if found:
             return found
