@@ -118,7 +118,7 @@ void read_position_options(const mechanism::Mechanism& mech, const io::po::varia
 kin::DofReport checked_mobility(const mechanism::Mechanism& mech, const std::string& file) {
   const kin::Model& m = mech.model;
   kin::Data probe(m);
-  kin::solve_position(m, probe, 0.0);
+  kin::assemble(m, probe, 0.0);  // the rank of an assembled configuration, even from a lazy drawing
   const kin::DofReport d = kin::dof(m, probe);
   if (d.drivers < d.dof)
     io::fail_at({file, 0, 0}, fmt::format("under-driven: the mechanism has {} degree(s) of freedom ({}; rank of Phi_q {}) "
@@ -133,6 +133,7 @@ int run_analysis(const mechanism::Mechanism& mech, const KinRequest& r, std::ost
   const kin::DofReport dof = checked_mobility(mech, r.file);
   KinWriter writer(mech, r, dof, out, err);
   kin::Data data(mech.model);
+  kin::assemble(mech.model, data, 0.0);  // the drawing's branch, found even when its links are drawn in line
   if (!r.range) {
     const KinAnalysis a = analyse_single(mech, data, r.driver, r.at, dof);
     const double input = a.positions.empty() ? 0.0 : a.positions.front().input;

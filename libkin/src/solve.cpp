@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
 
 namespace gearkit::kin {
 
@@ -353,6 +356,53 @@ Eigen::Vector2d point_acceleration(const Data& data, const BodyPoint& p) {
   const Eigen::Vector2d s = rotate(data.q(k + 2), p.local);
   const double w = data.qd(k + 2);
   return data.qdd.segment<2>(k) + data.qdd(k + 2) * perp(s) - w * w * s;
+}
+
+namespace {
+
+// Sum of the link-angle changes between two configurations, each wrapped to (-pi, pi].
+double angle_distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  double d = 0.0;
+  for (int i = 2; i < a.size(); i += 3) d += std::abs(std::remainder(a(i) - b(i), 2.0 * std::numbers::pi));
+  return d;
+}
+
+}  // namespace
+
+PositionReport assemble(const Model& model, Data& data, double t, const SolverOptions& options) {
+  const Eigen::VectorXd drawn = data.q;
+  const PositionReport first = solve_position(model, data, t, options);
+  if ((first.converged && !first.singular) || model.equations() < model.coordinates()) return first;
+  // Deterministic restarts: each link's angle moved by +-amplitude, the signs taken from the bits
+  // of the restart's number so that neighbouring links turn differently.
+  static constexpr double kAmplitudes[] = {0.1, 0.3, 0.6, 1.0};
+  std::optional<PositionReport> best;
+  Eigen::VectorXd best_q;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (const double amplitude : kAmplitudes) {
+    for (unsigned pattern = 1; pattern <= 12; ++pattern) {
+      data.q = drawn;
+      for (int i = 2, link = 0; i < data.q.size(); i += 3, ++link) {
+        const unsigned bit = (pattern * 2654435761u >> (link % 16)) & 1u;
+        data.q(i) += bit ? amplitude : -amplitude * 0.7;
+      }
+      const PositionReport r = solve_position(model, data, t, options);
+      if (!r.converged || r.singular) continue;
+      const double distance = angle_distance(data.q, drawn);
+      if (distance < best_distance) {
+        best_distance = distance;
+        best = r;
+        best_q = data.q;
+      }
+    }
+  }
+  if (!best) {
+    data.q = drawn;
+    solve_position(model, data, t, options);  // leaves data as the drawing's own attempt left it
+    return first;
+  }
+  data.q = best_q;
+  return solve_position(model, data, t, options);  // factorised at the kept solution
 }
 
 }  // namespace gearkit::kin

@@ -267,6 +267,37 @@ drivers:
   EXPECT_NE(j["warnings"][0].get<std::string>().find("change point at input"), std::string::npos) << j["warnings"];
 }
 
+// Norton's four-bar with coupler and rocker drawn at 0 deg (only the crank drawn at 40 deg), and
+// with every angle drawn 0: both assemble (issue 13 item 3; they failed with "singular Jacobian"
+// and "under-driven ... rank of Phi_q 7"). At --at 40 the angles are one of the two closed-form
+// branches: theta3 = 20.298, theta4 = 57.325 (open) or -60.978, -98.005 deg (crossed),
+// triangle A B O4 by the law of cosines.
+TEST(KinCommand, ALazyDrawingAssembles) {
+  const auto dir = scratch_dir("kin-lazy");
+  std::string text = slurp(kExamples + "four_bar.yaml");
+  const auto set_angle = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  set_angle("angle: 20 deg", "angle: 0 deg");
+  set_angle("angle: 75 deg", "angle: 0 deg");
+  const std::string half = write(dir, "lazy.yaml", text);
+  set_angle("angle: 40 deg", "angle: 0 deg");
+  const std::string flat = write(dir, "flat.yaml", text);
+  for (const std::string& file : {half, flat}) {
+    const auto j = run_json(shell_quote(file) + " --at 40");
+    ASSERT_EQ(j["positions"].size(), 1u) << file << j["warnings"];
+    const double theta3 = j["positions"][0]["q"]["coupler.angle_deg"], theta4 = j["positions"][0]["q"]["rocker.angle_deg"];
+    const bool open = std::abs(theta4 - 57.32488) < 1e-3;
+    EXPECT_TRUE(open || std::abs(theta4 + 98.00496) < 1e-3) << theta4;
+    EXPECT_NEAR(theta3, open ? 20.29788 : -60.97797, 1e-3);
+    EXPECT_EQ(j["dof"], 1);
+  }
+  // The half-lazy drawing is nearer the open branch (|20| + |57| deg against |61| + |98|).
+  EXPECT_NEAR(run_json(shell_quote(half) + " --at 40")["positions"][0]["q"]["rocker.angle_deg"].get<double>(), 57.32488, 1e-3);
+}
+
 TEST(KinCommand, CannotAssembleIsAWarning) {
   const auto r = run_gearkit("kin " + shell_quote(kExamples + "pantograph.yaml") + " --driver phi1 --at 60 --format json");
   ASSERT_EQ(r.status, 0) << r.err;

@@ -138,6 +138,30 @@ TEST(SolvePosition, ReportsWhenTheLinkageCannotClose) {
   EXPECT_EQ(data.q, guess);  // no garbage left behind
 }
 
+// Norton's four-bar drawn lazily: every link along the x axis (crank at O2, coupler from
+// A = (40, 0), rocker at O4, all angles 0) with the input at 0 (issue 13 item 3). Newton stalls
+// on the flat drawing's singular Jacobian; assemble() restarts from perturbed angles and keeps the
+// assembly nearest the drawing, which is one of the two closed-form branches at theta2 = 0 (the
+// crossed one is the open one mirrored in the ground line there). It returns the drawing's own
+// failure for a loop that cannot close.
+TEST(Assemble, ALazyDrawingFindsTheNearestBranch) {
+  const FourBarDims f{0.040, 0.120, 0.080, 0.100};
+  Model m = testing::four_bar(f, 0.0);
+  Data data(m);
+  data.q << 0, 0, 0, f.a, 0, 0, f.d, 0, 0;  // crank, coupler, rocker: (x, y, angle), all flat
+  Data plain(m);
+  plain.q = data.q;
+  const PositionReport newton = solve_position(m, plain, 0.0);
+  EXPECT_TRUE(!newton.converged || newton.singular);
+  const PositionReport r = assemble(m, data, 0.0);
+  ASSERT_TRUE(r.converged && !r.singular) << r.message;
+  const auto [theta3, theta4] = testing::four_bar_closed_form(f, 0.0);
+  EXPECT_NEAR(std::abs(data.q(5)), std::abs(theta3), 1e-9);
+  EXPECT_NEAR(std::abs(data.q(8)), std::abs(theta4), 1e-9);
+  EXPECT_GT(data.q(5) * data.q(8) * theta3 * theta4, 0.0);  // both from one branch
+  EXPECT_NEAR(data.q(2), 0.0, 1e-12);  // the crank where the driver holds it
+}
+
 TEST(SolvePosition, UnderDrivenModelIsRefused) {
   Model m = testing::four_bar({0.04, 0.12, 0.08, 0.1}, 40 * kDeg);
   Model free;

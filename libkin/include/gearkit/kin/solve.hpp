@@ -46,6 +46,15 @@ bool factorize(const Model& model, Data& data);
 /// singular Jacobian, no convergence: the mechanism cannot be assembled at this input).
 PositionReport solve_position(const Model& model, Data& data, double t, const SolverOptions& options = {});
 
+/// solve_position from a drawing, with a fallback for a lazy one: a drawing whose links lie in
+/// line (every angle drawn 0) puts Newton on a singular Jacobian although the mechanism
+/// assembles. When the drawing itself fails that way (or does not converge), Newton is
+/// restarted from 48 deterministic perturbations of the drawn link angles (0.1 to 1 rad) and the
+/// regular assembly nearest the drawing (least sum of link-angle changes) is kept. @returns the
+/// report of the solution kept, or the drawing's own report (data.q left at the drawing) when no
+/// restart assembles either.
+PositionReport assemble(const Model& model, Data& data, double t, const SolverOptions& options = {});
+
 /// Solves Phi_q qd = -Phi_t for data.qd at the current position (after solve_position).
 /// Also refreshes gamma with the new qd. @returns false if Phi_q is singular.
 bool solve_velocity(const Model& model, Data& data);
