@@ -91,6 +91,54 @@ std::optional<double> reachable_start(const mechanism::Mechanism& mech, kin::Dat
   return start;
 }
 
+// The flat positions of a change-point four-bar (s + l = p + q) that a sweep passes: the crank
+// lies on the ground line and the coupler and rocker in line, and the parallelogram and
+// anti-parallelogram branches cross there, so the continuation may go on along either without
+// any check noticing (the determinant's sign need not change). Fed the crank angle of each sample.
+class PassedFlatPositions {
+ public:
+  explicit PassedFlatPositions(const std::optional<kin::FourBar>& fb) {
+    if (!fb || kin::grashof(fb->ground, fb->crank_length, fb->coupler_length, fb->rocker_length).kind !=
+                   kin::GrashofClass::change_point)
+      return;
+    crank_ = fb->crank;
+    const Eigen::Vector2d ground_line = fb->o4.local - fb->o2.local;  // ground points: local is global
+    ground_angle_ = std::atan2(ground_line.y(), ground_line.x());
+    const double b = fb->coupler_length, c = fb->rocker_length, tolerance = 1e-9 * (fb->ground + fb->crank_length + b + c);
+    const auto flat = [&](double a_o4) { return std::abs(a_o4 - (b + c)) <= tolerance || std::abs(a_o4 - std::abs(b - c)) <= tolerance; };
+    flat_at_zero_ = flat(std::abs(fb->ground - fb->crank_length));
+    flat_at_pi_ = flat(fb->ground + fb->crank_length);
+  }
+
+  void add(const Eigen::VectorXd& q) {
+    if (crank_ < 0) return;
+    const double phi = q(3 * crank_ + 2) - ground_angle_;  // from the line O2 O4
+    if (last_) {
+      const double lo = std::min(*last_, phi), hi = std::max(*last_, phi);
+      for (double k = std::ceil(lo / std::numbers::pi); k * std::numbers::pi <= hi; ++k) {
+        const bool even = std::fmod(std::abs(k), 2.0) == 0.0;
+        if ((even ? flat_at_zero_ : flat_at_pi_) && k * std::numbers::pi > lo) crossings_.push_back(k * std::numbers::pi);
+      }
+    }
+    last_ = phi;
+  }
+
+  /// The crank angles [rad] of the flat positions passed with samples beyond them.
+  std::vector<double> passed() const {
+    std::vector<double> out;
+    for (const double c : crossings_)
+      if (last_ && std::abs(c - *last_) > 1e-9) out.push_back(c + ground_angle_);
+    return out;
+  }
+
+ private:
+  int crank_ = -1;
+  double ground_angle_ = 0.0;
+  bool flat_at_zero_ = false, flat_at_pi_ = false;
+  std::optional<double> last_;
+  std::vector<double> crossings_;
+};
+
 }  // namespace
 
 void describe_position(const mechanism::Mechanism& mech, const std::optional<kin::FourBar>& four_bar, kin::Data& data,
@@ -159,8 +207,10 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   std::size_t done = 0;
   kin::SweepResult s;
   const bool loads = m.has_loads();
+  PassedFlatPositions flat(four_bar);
   const auto visit = [&](const kin::SweepSample& sample) {
     progress.update(done++);
+    flat.add(sample.q);
     probe.q = sample.q;
     probe.inputs(driver) = sample.input;
     if (loads || sample.qd.size() == 0) {
@@ -187,6 +237,11 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   }
   a.dead_points.insert(a.dead_points.end(), s.dead_points.begin(), s.dead_points.end());
   a.extremes = s.extremes;
+  for (const double phi : flat.passed())
+    a.warnings.push_back(fmt::format("the sweep passed the change point at crank angle {:.6g} deg, where the four-bar lies "
+                                     "flat (s + l = p + q): past it the motion may go on along either branch (parallelogram "
+                                     "or anti-parallelogram) and the sweep does not check which; compare with a drawing on "
+                                     "each side", phi * kRadToDeg));
   // A four-bar with s + l = p + q stops where it flattens: two branches cross there (a change
   // point), and the sweep does not choose one; the driver could move it on.
   bool change_point = false;

@@ -265,6 +265,20 @@ drivers:
   ASSERT_EQ(j["dead_points"].size(), 1u);
   EXPECT_NEAR(j["dead_points"][0]["input_deg"].get<double>(), 180.0, 1e-4);
   EXPECT_NE(j["warnings"][0].get<std::string>().find("change point at input"), std::string::npos) << j["warnings"];
+  EXPECT_EQ(j["warnings"].size(), 1u) << j["warnings"];  // stopped at the flat position: not passed
+
+  // Drawn as an anti-parallelogram (the crossed branch at 40 deg: theta3 = -40.68, theta4 =
+  // -80.68 deg by the law of cosines) the sweep goes through the flat position at 180 deg
+  // without stopping; past it the branch is not checked, and the report says so.
+  std::string anti = slurp(file);
+  anti.replace(anti.find("angle: 0 deg}"), 13, "angle: -40.68 deg}");
+  anti.replace(anti.find("angle: 40 deg}", anti.find("rocker:")), 14, "angle: -80.68 deg}");
+  const auto k = run_json(shell_quote(write(scratch_dir("kin-anti-parallelogram"), "anti.yaml", anti)) + " --sweep 40:300:10");
+  EXPECT_NEAR(k["positions"][0]["q"]["rocker.angle_deg"].get<double>(), -80.68, 0.01);
+  bool passed = false;
+  for (const auto& w : k["warnings"])
+    passed = passed || w.get<std::string>().find("passed the change point at crank angle 180 deg") != std::string::npos;
+  EXPECT_TRUE(passed) << k["warnings"];
 }
 
 // Norton's four-bar with coupler and rocker drawn at 0 deg (only the crank drawn at 40 deg), and
