@@ -1,5 +1,5 @@
 // `gearkit kin FILE.yaml [--at VALUE | --sweep START:END:STEP] [--driver NAME] [--outputs A,B]
-//                        [--plot FILE] [--animate FILE] [--format text|json|csv|md]`
+//                        [--plot FILE] [--animate FILE] [--format text|json|csv|md|html]`
 // Planar mechanism analysis: degrees of freedom, positions, velocities, accelerations, dead
 // points, limit positions of outputs, instant centres, Grashof class and transmission angle,
 // driving torque and joint reactions.
@@ -179,7 +179,7 @@ int run_kin_command(plugin::CommandContext& context) {
   io::po::variables_map vm;
   const char* usage =
       "gearkit kin FILE.yaml [--at VALUE | --sweep START:END:STEP] [--driver NAME] [--outputs A,B] [--plot FILE] "
-      "[--animate FILE] [--equations] [--format text|json|csv|md]";
+      "[--animate FILE] [--equations] [--format text|json|csv|md|html]";
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   KinRequest r;
   r.common = io::common_options(vm);

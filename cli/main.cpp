@@ -119,7 +119,7 @@ void print_help(std::ostream& out, const po::options_description& global, const 
   for (const auto& b : kBuiltins) all[b.name] = b.summary;
   for (const auto& [name, spec] : host.commands()) all.emplace(name, spec.summary);
   for (const auto& [name, summary] : all) out << fmt::format("  {:<10} {}\n", name, summary);
-  out << "\nEvery command but demo takes --help, --format text|json|csv|md, --output FILE and --strict.\n"
+  out << "\nEvery command but demo takes --help, --format text|json|csv|md|html, --output FILE and --strict.\n"
          "Exit status: 0 success, 2 bad input or usage, 3 warnings under --strict, 1 internal failure.\n";
 }
 

@@ -43,7 +43,7 @@ int run_plugins_command(plugin::CommandContext& context, const plugin::PluginHos
   io::add_common_options(desc);
   io::po::positional_options_description none;
   io::po::variables_map vm;
-  if (!io::parse_command_line(context.args, desc, none, vm, "gearkit plugins [--format text|json|csv|md]",
+  if (!io::parse_command_line(context.args, desc, none, vm, "gearkit plugins [--format text|json|csv|md|html]",
                               context.out))
     return 0;
   const io::CommonOptions common = io::common_options(vm);

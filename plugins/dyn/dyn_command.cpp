@@ -20,7 +20,7 @@ namespace po = boost::program_options;
 namespace {
 
 constexpr std::string_view usage =
-    "gearkit dyn FILE.yaml [--plot FILE.svg] [--speed-plot FILE.svg] [--format text|json|csv|md] [--output FILE]";
+    "gearkit dyn FILE.yaml [--plot FILE.svg] [--speed-plot FILE.svg] [--format text|json|csv|md|html] [--output FILE]";
 
 void add_drive_line(const Model& m, io::Report& report) {
   io::Table t{"Drive line", {"shaft", "speed ratio w/w_motor", "efficiency from motor", "inertia [kg*m^2]"}, {}};

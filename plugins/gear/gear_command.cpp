@@ -43,7 +43,7 @@ constexpr std::string_view kUsage =
     "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW | --din3967 27cd[,26cd]] [--min-backlash LEN] "
     "[--centre-distance-tolerance jsN | --centre-distance-allowances UP,LOW] [--temperature T[,T_HOUSING] "
     "[--expansion A1,A2,AH]] [--torque1 T | --power P --speed1 N --material1 M --material2 M "
-    "[--method iso6336|agma|lewis-hertz] [--factor NAME=VALUE]...] [--format text|json|csv|md] [--svg FILE] [--dxf FILE] "
+    "[--method iso6336|agma|lewis-hertz] [--factor NAME=VALUE]...] [--format text|json|csv|md|html] [--svg FILE] [--dxf FILE] "
     "[--draw pair|gear1|gear2] [--tolerance LEN] [--cutter-teeth N] [--cutter-tip-radius LEN]\n       gearkit gear size --help";
 
 // gearkit 0.1 spelled two options the American way; the old names stay accepted for one release

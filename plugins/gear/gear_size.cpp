@@ -21,7 +21,7 @@ namespace {
 constexpr std::string_view kUsage =
     "gearkit gear size --ratio U --torque1 T | --power P --speed1 N --material1 M --material2 M [--quality 6] [--life 20000] "
     "[--ratio-tolerance 0.02] [--modules 2,2.5,3] [--z1-min 14] [--z1-max 40] [--shifts 0,0.2,0.4] [--helix-angle 0] "
-    "[--pressure-angle 20] [--width-ratio-max 1] [--width-module-min 8] [--count 5] [--format text|json|csv|md]";
+    "[--pressure-angle 20] [--width-ratio-max 1] [--width-module-min 8] [--count 5] [--format text|json|csv|md|html]";
 
 [[noreturn]] void fail(std::string_view key, std::string_view message) { io::fail_option(fmt::format("--{}", key), message); }
 

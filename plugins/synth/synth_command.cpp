@@ -24,7 +24,7 @@ namespace {
 constexpr std::string_view usage =
     "gearkit synth function|motion|path|crank-rocker|dwell FILE.yaml [--mechanism OUT.yaml] "
     "[--drawing OUT.svg|OUT.dxf] [--plot OUT.svg] [--seed N] [--evaluations N] [--restarts N] "
-    "[--format text|json|csv|md] [--output FILE] [--strict]";
+    "[--format text|json|csv|md|html] [--output FILE] [--strict]";
 
 using Task = std::function<Output(const io::YamlDocument&, const Overrides&)>;
 
