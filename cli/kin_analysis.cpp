@@ -18,6 +18,19 @@ std::string shown(const mechanism::Mechanism& mech, int driver, double v) {
   return fmt::format("{:.6g} {}", shown_input(mech, driver, v), input_unit(mech, driver));
 }
 
+// A sweep of the driver from `from` to `to` by `step`, dead points located to 1e-9 of its span;
+// positions only unless `velocities`.
+kin::SweepOptions sweep_options(int driver, double from, double to, double step, bool velocities) {
+  kin::SweepOptions o;
+  o.driver = driver;
+  o.start = from;
+  o.end = to;
+  o.step = step;
+  o.velocities = velocities;
+  o.min_step = 1e-9 * std::max(1.0, std::abs(to - from));
+  return o;
+}
+
 // Reaches `value` from the drawn input by continuation in 2 deg (2 mm) steps, so that the
 // position stays on the drawing's assembly branch (Newton from a distant guess may land on
 // another). @returns false with a warning in `a` when a dead point is in the way.
@@ -25,14 +38,7 @@ bool continue_from_drawing(const mechanism::Mechanism& mech, kin::Data& data, in
   const double drawn = data.inputs(driver);
   const double step = angular(mech, driver) ? 2.0 * std::numbers::pi / 180.0 : 0.002;
   if (std::abs(value - drawn) <= step) return true;
-  kin::SweepOptions o;
-  o.driver = driver;
-  o.start = drawn;
-  o.end = value;
-  o.step = step;
-  o.velocities = false;
-  o.min_step = 1e-9 * std::max(1.0, std::abs(value - drawn));
-  const kin::SweepResult s = kin::sweep(mech.model, data, o);
+  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, value, step, false));
   if (s.complete) {
     data.q = s.samples.back().q;
     return true;
@@ -52,14 +58,7 @@ std::optional<double> reachable_start(const mechanism::Mechanism& mech, kin::Dat
                                       const mechanism::DriverRange& range, KinAnalysis& a) {
   const double drawn = data.inputs(driver);
   const Eigen::VectorXd drawn_q = data.q;
-  kin::SweepOptions o;
-  o.driver = driver;
-  o.start = drawn;
-  o.end = range.start;
-  o.step = range.step;
-  o.velocities = false;
-  o.min_step = 1e-9 * std::max(1.0, std::abs(range.start - drawn));
-  const kin::SweepResult s = kin::sweep(mech.model, data, o);
+  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, range.start, range.step, false));
   if (!s.assembled) {
     a.warnings.push_back(fmt::format("cannot assemble at the drawn input {}: {}", shown(mech, driver, drawn), s.message));
     return std::nullopt;
@@ -191,13 +190,8 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   a.driver = driver;
   a.dof = dof;
   const kin::Model& m = mech.model;
-  kin::SweepOptions o;
-  o.driver = driver;
-  o.start = range.start;
-  o.end = range.end;
-  o.step = range.step;
+  kin::SweepOptions o = sweep_options(driver, range.start, range.end, range.step, true);
   o.outputs = mech.outputs;
-  o.min_step = 1e-9 * std::max(1.0, std::abs(range.end - range.start));
   // Each sample is analysed further (reactions, outputs) in a Data of its own: the sweep's
   // workspace carries its continuation state from one sample to the next.
   kin::Data probe(m);

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <filesystem>
 #include <fstream>
 
@@ -184,20 +185,30 @@ TEST(KinCommand, DeadPointInASweepIsAWarning) {
 // shortest link). The input stops where coupler and output rocker are in line, |A O4| = 90 + 40
 // or 90 - 40 mm: with |A O4|^2 = 80^2 + 100^2 - 2 80 100 cos(theta2), theta2 = acos(-500/16000)
 // = 91.790 deg and acos(13900/16000) = 29.685 deg (law of cosines; issue 13 item 3).
-const char* kDoubleRocker = R"(mechanism: double rocker
-ground: {O2: [0, 0], O4: [100, 0]}
-links:
-  input: {points: {O2: [0, 0], A: [80, 0]}, angle: 60 deg}
-  coupler: {points: {A: [0, 0], B: [40, 0]}, angle: 26 deg}
-  output: {points: {O4: [0, 0], B: [90, 0]}, angle: 105 deg}
-joints:
-  - {name: O2, type: revolute, at: [input.O2, ground.O2]}
-  - {name: A, type: revolute, at: [input.A, coupler.A]}
-  - {name: B, type: revolute, at: [coupler.B, output.B]}
-  - {name: O4, type: revolute, at: [output.O4, ground.O4]}
-drivers:
-  - {name: theta2, type: angle, link: input}
-)";
+// A pin-jointed four-bar file: ground O2 O4 of length d along x, links (lengths in mm, drawn
+// angles in deg) named as given, the driver theta2 on the first.
+struct FourBarFile {
+  std::string name, input = "crank", coupler = "coupler", output = "rocker";
+  double a = 0, b = 0, c = 0, d = 0, theta2 = 0, theta3 = 0, theta4 = 0;
+};
+
+std::string four_bar_yaml(const FourBarFile& f) {
+  std::ostringstream y;
+  y << "mechanism: " << f.name << "\nground: {O2: [0, 0], O4: [" << f.d << ", 0]}\nlinks:\n"
+    << "  " << f.input << ": {points: {O2: [0, 0], A: [" << f.a << ", 0]}, angle: " << f.theta2 << " deg}\n"
+    << "  " << f.coupler << ": {points: {A: [0, 0], B: [" << f.b << ", 0]}, angle: " << f.theta3 << " deg}\n"
+    << "  " << f.output << ": {points: {O4: [0, 0], B: [" << f.c << ", 0]}, angle: " << f.theta4 << " deg}\n"
+    << "joints:\n"
+    << "  - {name: O2, type: revolute, at: [" << f.input << ".O2, ground.O2]}\n"
+    << "  - {name: A, type: revolute, at: [" << f.input << ".A, " << f.coupler << ".A]}\n"
+    << "  - {name: B, type: revolute, at: [" << f.coupler << ".B, " << f.output << ".B]}\n"
+    << "  - {name: O4, type: revolute, at: [" << f.output << ".O4, ground.O4]}\n"
+    << "drivers:\n  - {name: theta2, type: angle, link: " << f.input << "}\n";
+  return y.str();
+}
+
+const std::string kDoubleRocker =
+    four_bar_yaml({"double rocker", "input", "coupler", "output", 80, 40, 90, 100, 60, 26, 105});
 
 TEST(KinCommand, AnUnreachableSweepStartSweepsTheReachableRange) {
   const double lower = std::acos(13900.0 / 16000.0) * 180 / M_PI, upper = std::acos(-500.0 / 16000.0) * 180 / M_PI;
@@ -242,20 +253,8 @@ TEST(KinCommand, AnUnreachableSweepStartSweepsTheReachableRange) {
 // anti-parallelogram branch crosses. The sweep stops there and says it is a change point, not a
 // dead point the driver cannot pass (issue 13 item 3; crossing it is still to come).
 TEST(KinCommand, AParallelogramStopsAtItsChangePointSayingSo) {
-  const std::string file = write(scratch_dir("kin-parallelogram"), "parallelogram.yaml", R"(mechanism: parallelogram
-ground: {O2: [0, 0], O4: [100, 0]}
-links:
-  crank: {points: {O2: [0, 0], A: [40, 0]}, angle: 40 deg}
-  coupler: {points: {A: [0, 0], B: [100, 0]}, angle: 0 deg}
-  rocker: {points: {O4: [0, 0], B: [40, 0]}, angle: 40 deg}
-joints:
-  - {name: O2, type: revolute, at: [crank.O2, ground.O2]}
-  - {name: A, type: revolute, at: [crank.A, coupler.A]}
-  - {name: B, type: revolute, at: [coupler.B, rocker.B]}
-  - {name: O4, type: revolute, at: [rocker.O4, ground.O4]}
-drivers:
-  - {name: theta2, type: angle, link: crank}
-)");
+  const FourBarFile parallelogram{"parallelogram", "crank", "coupler", "rocker", 40, 100, 40, 100, 40, 0, 40};
+  const std::string file = write(scratch_dir("kin-parallelogram"), "parallelogram.yaml", four_bar_yaml(parallelogram));
   const auto j = run_json(shell_quote(file) + " --sweep 10:350:10");
   ASSERT_GE(j["positions"].size(), 17u);
   for (const auto& p : j["positions"]) {
@@ -270,10 +269,10 @@ drivers:
   // Drawn as an anti-parallelogram (the crossed branch at 40 deg: theta3 = -40.68, theta4 =
   // -80.68 deg by the law of cosines) the sweep goes through the flat position at 180 deg
   // without stopping; past it the branch is not checked, and the report says so.
-  std::string anti = slurp(file);
-  anti.replace(anti.find("angle: 0 deg}"), 13, "angle: -40.68 deg}");
-  anti.replace(anti.find("angle: 40 deg}", anti.find("rocker:")), 14, "angle: -80.68 deg}");
-  const auto k = run_json(shell_quote(write(scratch_dir("kin-anti-parallelogram"), "anti.yaml", anti)) + " --sweep 40:300:10");
+  FourBarFile anti = parallelogram;
+  anti.theta3 = -40.68, anti.theta4 = -80.68;
+  const auto k = run_json(shell_quote(write(scratch_dir("kin-anti-parallelogram"), "anti.yaml", four_bar_yaml(anti))) +
+                          " --sweep 40:300:10");
   EXPECT_NEAR(k["positions"][0]["q"]["rocker.angle_deg"].get<double>(), -80.68, 0.01);
   bool passed = false;
   for (const auto& w : k["warnings"])
