@@ -19,9 +19,11 @@ std::string shown(const mechanism::Mechanism& mech, int driver, double v) {
 }
 
 // A sweep of the driver from `from` to `to` by `step`, dead points located to 1e-9 of its span;
-// positions only unless `velocities`.
-kin::SweepOptions sweep_options(int driver, double from, double to, double step, bool velocities) {
+// positions only unless `velocities`; the other branch at change points if `switch_branch`.
+kin::SweepOptions sweep_options(int driver, double from, double to, double step, bool velocities,
+                                bool switch_branch) {
   kin::SweepOptions o;
+  o.switch_branch = switch_branch;
   o.driver = driver;
   o.start = from;
   o.end = to;
@@ -31,14 +33,56 @@ kin::SweepOptions sweep_options(int driver, double from, double to, double step,
   return o;
 }
 
+// Moves `data` from the drawing to just past the sweep's start (kin::change_point_offset) by
+// continuation, so that the sweep's first Newton solve starts next to the start on the
+// drawing's own branch: from the drawing itself Newton may jump to another branch, and at a
+// start on a change point it could not tell which branch the drawing is on. Left at the drawing
+// when the way is blocked (a dead point: the sweep's own fallbacks then apply).
+void approach_start(const mechanism::Mechanism& mech, kin::Data& data, int driver, const kin::SweepOptions& sweep) {
+  const double drawn = data.inputs(driver), direction = sweep.end >= sweep.start ? 1.0 : -1.0;
+  const double near = sweep.start + direction * 2.0 * kin::change_point_offset(sweep);
+  const double step = angular(mech, driver) ? 2.0 * std::numbers::pi / 180.0 : 0.002;
+  if (std::abs(near - drawn) <= 1e-12 * std::max(1.0, std::abs(drawn))) return;
+  const Eigen::VectorXd drawn_q = data.q;
+  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, near, std::min(step, std::abs(near - drawn)), false, false));
+  if (s.complete) {
+    data.q = s.samples.back().q;
+    data.inputs(driver) = near;
+    return;
+  }
+  data.q = drawn_q;
+  data.inputs(driver) = drawn;
+}
+
+// The change points a sweep crossed, kept in the analysis with a note each.
+void note_change_points(const mechanism::Mechanism& mech, int driver, const kin::SweepResult& s, KinAnalysis& a) {
+  for (const kin::ChangePoint& c : s.change_points) {
+    a.change_points.push_back(c);
+    if (!c.bifurcation) {
+      a.warnings.push_back(fmt::format("singular position at input {:.6f} {} (the Jacobian loses rank, e.g. a triple "
+                                       "parallelogram lying flat): no other branch passes there; the sweep went on",
+                                       shown_input(mech, driver, c.input), input_unit(mech, driver)));
+      continue;
+    }
+    a.warnings.push_back(fmt::format(
+        "change point at input {:.6f} {}: two branches of the motion cross there (e.g. a parallelogram lying flat); "
+        "{}", shown_input(mech, driver, c.input), input_unit(mech, driver),
+        c.switched ? "the sweep went on along the other branch (--branch switch)"
+                   : "the sweep went on along the branch that continues the motion smoothly (--branch switch takes the "
+                     "other)"));
+  }
+}
+
 // Reaches `value` from the drawn input by continuation in 2 deg (2 mm) steps, so that the
 // position stays on the drawing's assembly branch (Newton from a distant guess may land on
 // another). @returns false with a warning in `a` when a dead point is in the way.
-bool continue_from_drawing(const mechanism::Mechanism& mech, kin::Data& data, int driver, double value, KinAnalysis& a) {
+bool continue_from_drawing(const mechanism::Mechanism& mech, kin::Data& data, int driver, double value, KinAnalysis& a,
+                           bool switch_branch = false) {
   const double drawn = data.inputs(driver);
   const double step = angular(mech, driver) ? 2.0 * std::numbers::pi / 180.0 : 0.002;
   if (std::abs(value - drawn) <= step) return true;
-  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, value, step, false));
+  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, value, step, false, switch_branch));
+  note_change_points(mech, driver, s, a);
   if (s.complete) {
     data.q = s.samples.back().q;
     return true;
@@ -58,7 +102,7 @@ std::optional<double> reachable_start(const mechanism::Mechanism& mech, kin::Dat
                                       const mechanism::DriverRange& range, KinAnalysis& a) {
   const double drawn = data.inputs(driver);
   const Eigen::VectorXd drawn_q = data.q;
-  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, range.start, range.step, false));
+  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, range.start, range.step, false, false));
   if (!s.assembled) {
     a.warnings.push_back(fmt::format("cannot assemble at the drawn input {}: {}", shown(mech, driver, drawn), s.message));
     return std::nullopt;
@@ -90,54 +134,6 @@ std::optional<double> reachable_start(const mechanism::Mechanism& mech, kin::Dat
   return start;
 }
 
-// The flat positions of a change-point four-bar (s + l = p + q) that a sweep passes: the crank
-// lies on the ground line and the coupler and rocker in line, and the parallelogram and
-// anti-parallelogram branches cross there, so the continuation may go on along either without
-// any check noticing (the determinant's sign need not change). Fed the crank angle of each sample.
-class PassedFlatPositions {
- public:
-  explicit PassedFlatPositions(const std::optional<kin::FourBar>& fb) {
-    if (!fb || kin::grashof(fb->ground, fb->crank_length, fb->coupler_length, fb->rocker_length).kind !=
-                   kin::GrashofClass::change_point)
-      return;
-    crank_ = fb->crank;
-    const Eigen::Vector2d ground_line = fb->o4.local - fb->o2.local;  // ground points: local is global
-    ground_angle_ = std::atan2(ground_line.y(), ground_line.x());
-    const double b = fb->coupler_length, c = fb->rocker_length, tolerance = 1e-9 * (fb->ground + fb->crank_length + b + c);
-    const auto flat = [&](double a_o4) { return std::abs(a_o4 - (b + c)) <= tolerance || std::abs(a_o4 - std::abs(b - c)) <= tolerance; };
-    flat_at_zero_ = flat(std::abs(fb->ground - fb->crank_length));
-    flat_at_pi_ = flat(fb->ground + fb->crank_length);
-  }
-
-  void add(const Eigen::VectorXd& q) {
-    if (crank_ < 0) return;
-    const double phi = q(3 * crank_ + 2) - ground_angle_;  // from the line O2 O4
-    if (last_) {
-      const double lo = std::min(*last_, phi), hi = std::max(*last_, phi);
-      for (double k = std::ceil(lo / std::numbers::pi); k * std::numbers::pi <= hi; ++k) {
-        const bool even = std::fmod(std::abs(k), 2.0) == 0.0;
-        if ((even ? flat_at_zero_ : flat_at_pi_) && k * std::numbers::pi > lo) crossings_.push_back(k * std::numbers::pi);
-      }
-    }
-    last_ = phi;
-  }
-
-  /// The crank angles [rad] of the flat positions passed with samples beyond them.
-  std::vector<double> passed() const {
-    std::vector<double> out;
-    for (const double c : crossings_)
-      if (last_ && std::abs(c - *last_) > 1e-9) out.push_back(c + ground_angle_);
-    return out;
-  }
-
- private:
-  int crank_ = -1;
-  double ground_angle_ = 0.0;
-  bool flat_at_zero_ = false, flat_at_pi_ = false;
-  std::optional<double> last_;
-  std::vector<double> crossings_;
-};
-
 }  // namespace
 
 void describe_position(const mechanism::Mechanism& mech, const std::optional<kin::FourBar>& four_bar, kin::Data& data,
@@ -162,14 +158,14 @@ void describe_position(const mechanism::Mechanism& mech, const std::optional<kin
 }
 
 KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, int driver, std::optional<double> at,
-                           const kin::DofReport& dof) {
+                           const kin::DofReport& dof, bool switch_branch) {
   KinAnalysis a;
   a.single = true;
   a.driver = driver;
   a.dof = dof;
   const kin::Model& m = mech.model;
   const double value = at ? *at : data.inputs(driver);
-  if (!continue_from_drawing(mech, data, driver, value, a)) return a;
+  if (!continue_from_drawing(mech, data, driver, value, a, switch_branch)) return a;
   const kin::PositionReport r = kin::solve_at(m, data, driver, value);
   if (!r.converged || r.singular) {
     a.warnings.push_back(fmt::format("cannot analyse at input {}: {}", shown(mech, driver, value),
@@ -185,12 +181,12 @@ KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, in
 }
 
 KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int driver, const mechanism::DriverRange& range,
-                          const kin::DofReport& dof, const PositionSink& sink) {
+                          const kin::DofReport& dof, const PositionSink& sink, bool switch_branch) {
   KinAnalysis a;
   a.driver = driver;
   a.dof = dof;
   const kin::Model& m = mech.model;
-  kin::SweepOptions o = sweep_options(driver, range.start, range.end, range.step, true);
+  kin::SweepOptions o = sweep_options(driver, range.start, range.end, range.step, true, switch_branch);
   o.outputs = mech.outputs;
   // Each sample is analysed further (reactions, outputs) in a Data of its own: the sweep's
   // workspace carries its continuation state from one sample to the next.
@@ -201,10 +197,8 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   std::size_t done = 0;
   kin::SweepResult s;
   const bool loads = m.has_loads();
-  PassedFlatPositions flat(four_bar);
   const auto visit = [&](const kin::SweepSample& sample) {
     progress.update(done++);
-    flat.add(sample.q);
     probe.q = sample.q;
     probe.inputs(driver) = sample.input;
     if (loads || sample.qd.size() == 0) {
@@ -218,6 +212,7 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   };
   const Eigen::VectorXd drawn_q = data.q;
   const double drawn = data.inputs(driver);
+  approach_start(mech, data, driver, o);
   kin::sweep(m, data, o, s, visit);
   if (!s.assembled) {
     // Not at the start: sweep from the first input the drawing reaches (a double rocker's input
@@ -231,26 +226,11 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   }
   a.dead_points.insert(a.dead_points.end(), s.dead_points.begin(), s.dead_points.end());
   a.extremes = s.extremes;
-  for (const double phi : flat.passed())
-    a.warnings.push_back(fmt::format("the sweep passed the change point at crank angle {:.6g} deg, where the four-bar lies "
-                                     "flat (s + l = p + q): past it the motion may go on along either branch (parallelogram "
-                                     "or anti-parallelogram) and the sweep does not check which; compare with a drawing on "
-                                     "each side", phi * kRadToDeg));
-  // A four-bar with s + l = p + q stops where it flattens: two branches cross there (a change
-  // point), and the sweep does not choose one; the driver could move it on.
-  bool change_point = false;
-  if (four_bar)
-    change_point = kin::grashof(four_bar->ground, four_bar->crank_length, four_bar->coupler_length,
-                                four_bar->rocker_length).kind == kin::GrashofClass::change_point;
+  note_change_points(mech, driver, s, a);
   for (const kin::DeadPoint& d : s.dead_points)
-    a.warnings.push_back(
-        change_point
-            ? fmt::format("change point at input {:.6f} {}: the four-bar lies flat and two branches cross (s + l = p + q); "
-                          "the sweep stops there rather than choose one (sweep on from a drawing past it)",
-                          shown_input(mech, driver, d.input), input_unit(mech, driver))
-            : fmt::format("dead point at input {:.6f} {}: the driver cannot move the mechanism past it; "
-                          "the sweep stops there instead of jumping to another assembly branch",
-                          shown_input(mech, driver, d.input), input_unit(mech, driver)));
+    a.warnings.push_back(fmt::format("dead point at input {:.6f} {}: the driver cannot move the mechanism past it; "
+                                     "the sweep stops there instead of jumping to another assembly branch",
+                                     shown_input(mech, driver, d.input), input_unit(mech, driver)));
   return a;
 }
 

@@ -30,6 +30,7 @@ struct KinAnalysis {
   int driver = 0;
   std::vector<KinPosition> positions;
   std::vector<kin::DeadPoint> dead_points;
+  std::vector<kin::ChangePoint> change_points;  ///< crossed by the sweep, or on the way to --at
   std::vector<kin::OutputExtreme> extremes;
   std::vector<std::string> warnings;
   std::vector<std::optional<Eigen::Vector2d>> instant_centres;  ///< per body, single position only
@@ -49,14 +50,16 @@ using PositionSink = std::function<void(const KinPosition&)>;
 /// One position at `at` (the drawn input when absent), reached by continuation from the drawn
 /// configuration so that it stays on the drawing's assembly branch. `dof` is the mobility found
 /// at the drawing. Problems (unreachable input, dead point) are warnings with no position.
+/// `switch_branch`: at a change point on the way, go on along the other branch
+/// (kin::SweepOptions::switch_branch).
 KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, int driver, std::optional<double> at,
-                           const kin::DofReport& dof);
+                           const kin::DofReport& dof, bool switch_branch = false);
 
 /// A sweep of the driver over `range`: each position goes to `sink` as it is solved, so memory
 /// does not grow with the number of positions; the result holds dead points, extremes and
 /// warnings, no positions.
 KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int driver, const mechanism::DriverRange& range,
-                          const kin::DofReport& dof, const PositionSink& sink);
+                          const kin::DofReport& dof, const PositionSink& sink, bool switch_branch = false);
 
 /// The SVG animation of the mechanism through the positions (SMIL, loops forever): links, joints,
 /// ground, slider blocks on their guides, names, output point traces (kin_animation_elements.hpp).

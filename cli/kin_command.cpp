@@ -135,7 +135,7 @@ int run_analysis(const mechanism::Mechanism& mech, const KinRequest& r, std::ost
   kin::Data data(mech.model);
   kin::assemble(mech.model, data, 0.0);  // the drawing's branch, found even when its links are drawn in line
   if (!r.range) {
-    const KinAnalysis a = analyse_single(mech, data, r.driver, r.at, dof);
+    const KinAnalysis a = analyse_single(mech, data, r.driver, r.at, dof, r.switch_branch);
     const double input = a.positions.empty() ? 0.0 : a.positions.front().input;
     writer.plan(input, input, 1);
     for (const KinPosition& p : a.positions) writer.add(p);
@@ -146,7 +146,8 @@ int run_analysis(const mechanism::Mechanism& mech, const KinRequest& r, std::ost
   planned.end = r.range->end;
   planned.step = r.range->step;
   writer.plan(r.range->start, r.range->end, kin::sweep_sample_count(planned));
-  const KinAnalysis a = analyse_sweep(mech, data, r.driver, *r.range, dof, [&](const KinPosition& p) { writer.add(p); });
+  const KinAnalysis a = analyse_sweep(mech, data, r.driver, *r.range, dof, [&](const KinPosition& p) { writer.add(p); },
+                                      r.switch_branch);
   return writer.finish(a);
 }
 
@@ -165,7 +166,10 @@ io::po::options_description kin_options() {
       "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
   add_coupler_options(desc);  // kin_coupler.cpp
   desc.add_options()("speed", io::po::value<std::string>()->value_name("SPEED"),
-                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm)");
+                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm)")(
+      "branch", io::po::value<std::string>()->value_name("continue|switch"),
+      "at a change point (two branches cross, e.g. a parallelogram lying flat): go on along the branch that "
+      "continues the motion smoothly (default) or switch to the other");
   io::add_common_options(desc);
   return desc;
 }
@@ -179,7 +183,7 @@ int run_kin_command(plugin::CommandContext& context) {
   io::po::variables_map vm;
   const char* usage =
       "gearkit kin FILE.yaml [--at VALUE | --sweep START:END:STEP] [--driver NAME] [--outputs A,B] [--plot FILE] "
-      "[--animate FILE] [--equations] [--format text|json|csv|md|html]";
+      "[--animate FILE] [--branch continue|switch] [--equations] [--format text|json|csv|md|html]";
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;
   KinRequest r;
   r.common = io::common_options(vm);
@@ -204,6 +208,12 @@ int run_kin_command(plugin::CommandContext& context) {
   if (vm.count("plot")) r.plot = vm["plot"].as<std::string>();
   if (vm.count("animate")) r.animate = vm["animate"].as<std::string>();
   r.speed = animation_speed(vm, mech, r.driver);
+  if (vm.count("branch")) {
+    const std::string branch = vm["branch"].as<std::string>();
+    if (branch != "continue" && branch != "switch")
+      io::fail_option("--branch", fmt::format("expected continue or switch, found {}", io::quote(branch)));
+    r.switch_branch = branch == "switch";
+  }
   r.vm = &vm;
   return run_analysis(mech, r, context.out, context.err);
 }

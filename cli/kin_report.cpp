@@ -231,6 +231,17 @@ void dead_points_section(const mechanism::Mechanism& mech, const KinAnalysis& a,
   rep.json["dead_points"] = dead;
 }
 
+// Bifurcations crossed: where, and which branch the sweep took (the warnings say it in words).
+void change_points_section(const mechanism::Mechanism& mech, const KinAnalysis& a, io::Report& rep) {
+  nlohmann::json changes = nlohmann::json::array();
+  for (const kin::ChangePoint& c : a.change_points)
+    changes.push_back({{input_key(mech, a.driver), shown_input(mech, a.driver, c.input)},
+                       {"q", coordinates_object(mech.model, c.q, 0)},
+                       {"branch", c.switched ? "switched" : "continued"},
+                       {"bifurcation", c.bifurcation}});
+  rep.json["change_points"] = changes;
+}
+
 void limit_positions_section(const mechanism::Mechanism& mech, const KinAnalysis& a, io::Report& rep) {
   const kin::Model& m = mech.model;
   const int driver = a.driver;
@@ -294,6 +305,7 @@ io::Report kin_report_tail(const mechanism::Mechanism& mech, const KinAnalysis& 
   io::Report rep;
   rep.warnings = a.warnings;
   dead_points_section(mech, a, rep);
+  change_points_section(mech, a, rep);
   limit_positions_section(mech, a, rep);
   if (a.single && !a.positions.empty()) {
     if (a.positions.front().forces) reactions_section(mech, a.positions.front(), a.driver, rep);

@@ -113,6 +113,10 @@ void KinWriter::fill_pictures(const KinAnalysis& a, io::Report& tail) {
         marks.push_back({shown_input(mech_, a.driver, d.input),
                          fmt::format("dead point at {:.4g} {}: the sweep stops", shown_input(mech_, a.driver, d.input),
                                      input_unit(mech_, a.driver))});
+      for (const kin::ChangePoint& c : a.change_points)
+        marks.push_back({shown_input(mech_, a.driver, c.input),
+                         fmt::format("change point at {:.4g} {}: branches cross", shown_input(mech_, a.driver, c.input),
+                                     input_unit(mech_, a.driver))});
       files_.fill("--plot", plot_->svg(marks));
     }
   }

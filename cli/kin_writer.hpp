@@ -27,6 +27,7 @@ struct KinRequest {
   bool equations = false;
   std::optional<std::string> plot, animate;
   std::optional<double> speed;  ///< --speed, SI, for the animation's loop time
+  bool switch_branch = false;   ///< --branch switch: the other branch at each change point
   io::CommonOptions common;
   const io::po::variables_map* vm = nullptr;  ///< for the coupler-curve options
 };

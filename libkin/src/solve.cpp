@@ -186,6 +186,9 @@ bool factorize(const Model& model, Data& data) {
     data.singular = true;
     return false;
   }
+  // The same crude estimate KLU gives for the square case: the spread of the pivots.
+  const auto pivots = data.dense_qr.matrixR().diagonal().head(model.coordinates()).cwiseAbs();
+  data.rcond = pivots.minCoeff() / pivots.maxCoeff();
   return true;
 }
 

@@ -1,6 +1,7 @@
 #include <gearkit/kin/sweep.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <stdexcept>
@@ -21,7 +22,25 @@ struct Anchor {
   double input = 0.0;
   Eigen::VectorXd q, dq, qd, qdd;
   int determinant_sign = 0;
+  double rcond = 1.0;            // of Phi_q there (Data::rcond)
+  double rcond_scale = 0.0;      // the largest rcond on the branch so far
+  Eigen::VectorXd dq_predicted;  // scratch of advance(): the tangent the branch should have
 };
+
+// Largest relative change of the tangent dq/d(input) that a step may show against its
+// prediction: a regular step's tangent is predicted to O(h^2) (O(h) without history), while a
+// jump to another branch through a bifurcation changes it at first order (a parallelogram's
+// rocker turns with the crank, an anti-parallelogram's does not). The driven coordinate's own
+// entry is 1, so the norm is never small.
+constexpr double kTangentJump = 0.1, kTangentJumpWithoutHistory = 0.3;
+// Largest fall of rcond(Phi_q) over one step: approaching a singular point by halving divides
+// it by about 2 per step; a step landing on it divides it by orders of magnitude.
+constexpr double kConditioningDrop = 1e-3;
+// A configuration whose rcond(Phi_q) is below this fraction of the best on its branch is taken
+// as singular (a Newton solution "at" a change point converges to within sqrt(tolerance) of it,
+// where the tangent is meaningless): the sweep crosses it instead (cross()).
+constexpr double kSingularRcond = 1e-6;
+constexpr double kStartConditioningDrop = 1e-2;
 
 // Tries to move from `from` to `target`: predicts, solves, and checks that the branch is kept.
 // The prediction integrates the quadratic through the last three sensitivities dq/d(input)
@@ -33,17 +52,22 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
              int& iterations) {
   const double h = target - from.input;
   to.q = from.q + from.dq * h;  // the prediction, kept until the branch check
+  to.dq_predicted = from.dq;
   const auto usable = [&](const Anchor* a, const Anchor& later) {
     return a && a->input != later.input && a->dq.size() == from.dq.size();
   };
-  if (usable(previous, from)) {
+  const bool history = usable(previous, from);
+  if (history) {
     // Newton form of the interpolant: dq(s) = d0 + d01 (s - s0) + d012 (s - s0)(s - s1).
     const double s0 = from.input, s1 = previous->input;
     to.q += (0.5 * h * h / (s0 - s1)) * (from.dq - previous->dq);
+    to.dq_predicted += (h / (s0 - s1)) * (from.dq - previous->dq);
     if (usable(before, *previous) && before->input != s0) {
       const double s2 = before->input;
       const double c = (h * h * h / 3.0 + 0.5 * (s0 - s1) * h * h) / (s0 - s2);
       to.q += (c / (s0 - s1)) * (from.dq - previous->dq) - (c / (s1 - s2)) * (previous->dq - before->dq);
+      const double e = h * (h + s0 - s1) / (s0 - s2);
+      to.dq_predicted += (e / (s0 - s1)) * (from.dq - previous->dq) - (e / (s1 - s2)) * (previous->dq - before->dq);
     }
   }
   data.q = to.q;
@@ -53,13 +77,22 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
   if (!report.converged || report.singular) return false;
   // Too close to a singular configuration to know which branch continues (a toggle, or a
   // bifurcation such as a flattened parallelogram): treat as the dead point.
-  if (data.rcond < 1e-10) return false;
+  if (data.rcond < std::max(1e-10, kSingularRcond * from.rcond_scale)) return false;
+  // A sudden fall of the conditioning is a landing on or next to a singular configuration (a
+  // change point the step ends on), where dq is any solution of a nearly singular system and
+  // cannot tell the branch: approached by halving instead, so that cross() takes over there.
+  if (data.rcond < kConditioningDrop * from.rcond) return false;
   if (from.determinant_sign != 0 && data.determinant_sign != from.determinant_sign) return false;
   if (largest_angle_change(data.q, to.q) > 0.1) return false;
   to.input = target;
   to.q = data.q;
   to.determinant_sign = data.determinant_sign;
+  to.rcond = data.rcond;
+  to.rcond_scale = std::max(from.rcond_scale, data.rcond);
   if (!input_sensitivity(model, data, driver, to.dq) || !to.dq.allFinite()) return false;
+  const double jump = (to.dq - to.dq_predicted).lpNorm<Eigen::Infinity>();
+  const double scale = std::max(to.dq.lpNorm<Eigen::Infinity>(), to.dq_predicted.lpNorm<Eigen::Infinity>());
+  if (jump > (history ? kTangentJump : kTangentJumpWithoutHistory) * scale) return false;
   if (!velocities) return true;
   // Velocities and accelerations with the factorisation at hand. Phi_q qd = -Phi_t; when Phi_t
   // vanishes off the swept driver's row (no other driver moves: joints and elements do not
@@ -75,6 +108,138 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
     to.qdd = data.qdd;
   }
   return true;
+}
+
+// The cubic Hermite curve through the anchors' q with their tangents dq, evaluated (or
+// extrapolated) at `input`: q and its derivative. Error O(|b - a|^4) on a smooth branch.
+void hermite(const Anchor& a, const Anchor& b, double input, Eigen::VectorXd& q, Eigen::VectorXd& dq) {
+  const double h = b.input - a.input, t = (input - a.input) / h;
+  const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t), h01 = t * t * (3 - 2 * t),
+               h11 = t * t * (t - 1);
+  q = h00 * a.q + (h10 * h) * a.dq + h01 * b.q + (h11 * h) * b.dq;
+  const double d00 = 6 * t * (t - 1) / h, d10 = (1 - t) * (1 - 3 * t), d01 = -d00, d11 = t * (3 * t - 2);
+  dq = d00 * a.q + d10 * a.dq + d01 * b.q + d11 * b.dq;
+}
+
+// A sample at `input` between two anchors of one branch: q and dq by the Hermite curve, the
+// velocities and accelerations linearly (O(h^2): the samples this serves lie on a change point,
+// where the Jacobian cannot give them).
+void interpolate(const Anchor& a, const Anchor& b, double input, Anchor& to) {
+  hermite(a, b, input, to.q, to.dq);
+  to.input = input;
+  to.determinant_sign = 0;
+  const double t = (input - a.input) / (b.input - a.input);
+  if (a.qd.size() == b.qd.size()) to.qd = (1 - t) * a.qd + t * b.qd;
+  if (a.qdd.size() == b.qdd.size()) to.qdd = (1 - t) * a.qdd + t * b.qdd;
+}
+
+// Completes an anchor at the solved data.q: tangent, and velocities when the sweep has them.
+bool settle_anchor(const Model& model, Data& data, const SweepOptions& options, double input, Anchor& to) {
+  to.input = input;
+  to.q = data.q;
+  to.determinant_sign = data.determinant_sign;
+  to.rcond = data.rcond;
+  to.rcond_scale = std::max(to.rcond_scale, data.rcond);
+  if (!input_sensitivity(model, data, options.driver, to.dq) || !to.dq.allFinite()) return false;
+  if (options.velocities && solve_velocity(model, data) && solve_acceleration(model, data)) {
+    to.qd = data.qd;
+    to.qdd = data.qdd;
+  }
+  return true;
+}
+
+// Distances from a change point at which the branch is taken up again, tried in turn (see
+// change_point_offset()).
+std::array<double, 3> crossing_steps(const SweepOptions& options) {
+  const double base = change_point_offset(options);
+  return {base, 0.125 * base, std::min(0.25 * options.step, 4.0 * base)};
+}
+
+// Near a change point Newton's residual test (max |Phi| <= tolerance) leaves an error of about
+// tolerance / sigma_min in q, sigma_min ~ the distance to the point: the anchors around one are
+// solved a thousand times tighter, so that the extrapolations through them stay exact.
+SolverOptions tight(const SolverOptions& options) {
+  SolverOptions o = options;
+  o.tolerance *= 1e-3;
+  o.max_iterations = std::max(o.max_iterations, 50);
+  return o;
+}
+
+// The sweep's start is singular (it lies on a change point, e.g. a parallelogram's flat
+// position): the mechanism is assembled just past it in the sweep's direction from `guess`
+// (nearest the drawing, kin::assemble), a second anchor a step further, and the start sample
+// extrapolated back from them; kept only if the extrapolation closes the constraints (at a
+// fold, a limit the sweep starts on, the branch is not smooth there and this fails).
+bool start_beside_change_point(const Model& model, Data& data, const SweepOptions& options, const Eigen::VectorXd& guess,
+                               Anchor& start_sample, Anchor& first) {
+  first.rcond_scale = 0.0;
+  const double direction = options.end >= options.start ? 1.0 : -1.0;
+  for (const double delta : crossing_steps(options)) {
+    if (!(delta > 100.0 * options.min_step)) continue;
+    data.q = guess;
+    data.inputs(options.driver) = options.start + 2.0 * direction * delta;
+    const PositionReport r = assemble(model, data, data.t, tight(options.solver));
+    if (!r.converged || r.singular || data.rcond < 1e-10) continue;
+    Anchor far;
+    far.rcond_scale = 0.0;
+    int iterations = 0;
+    if (!settle_anchor(model, data, options, data.inputs(options.driver), far) ||
+        !advance(model, data, options.driver, far, nullptr, nullptr, options.start + direction * delta,
+                 tight(options.solver), options.velocities, first, iterations))
+      continue;
+    interpolate(far, first, options.start, start_sample);
+    data.q = start_sample.q;
+    data.inputs(options.driver) = options.start;
+    evaluate_constraints(model, data, data.t);
+    if (data.phi.lpNorm<Eigen::Infinity>() > 10.0 * options.solver.tolerance) continue;
+    data.q = first.q;  // the continuation goes on from `first`, factorised there
+    data.inputs(options.driver) = first.input;
+    solve_position(model, data, data.t, options.solver);
+    return true;
+  }
+  return false;
+}
+
+enum class Start { failed, regular, change_point };
+
+// The first sample, assembled at options.start from data.q. Newton started on a change point
+// may "converge" there to within sqrt(tolerance) of the singular configuration with a usable
+// residual: a start whose Jacobian is much worse conditioned than the branch just past it
+// (kConditioningDrop) is taken as one and left as start_beside_change_point() does.
+Start start_sweep(const Model& model, Data& data, const SweepOptions& options, PositionReport& report,
+                  Anchor& start_sample, Anchor& first) {
+  const Eigen::VectorXd guess = data.q;
+  report = solve_at(model, data, options.driver, options.start, options.solver);
+  const bool converged = report.converged && !report.singular;
+  if (converged) {
+    first = Anchor{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
+                   data.determinant_sign, data.rcond, data.rcond, {}};
+    // Compared with the conditioning a sweep step further on (from the guess: the branch does
+    // not matter for its order of magnitude), which grows linearly with the distance from a
+    // change point: a start within a hundredth of the step of one is taken as on it.
+    const double direction = options.end >= options.start ? 1.0 : -1.0;
+    data.q = guess;
+    data.inputs(options.driver) = options.start + direction * options.step;
+    const PositionReport probe = solve_position(model, data, data.t, options.solver);
+    if (!probe.converged || probe.singular || first.rcond >= kStartConditioningDrop * data.rcond) {
+      start_sample = first;
+      data.q = first.q;  // factorised at the start again for the continuation
+      solve_at(model, data, options.driver, options.start, options.solver);
+      return Start::regular;
+    }
+  }
+  Anchor beside_sample, beside_first;
+  const bool beside = start_beside_change_point(model, data, options, guess, beside_sample, beside_first);
+  if (converged && !beside) {
+    start_sample = first;
+    data.q = first.q;  // factorised at the start again for the continuation
+    solve_at(model, data, options.driver, options.start, options.solver);
+    return Start::regular;
+  }
+  if (!beside) return Start::failed;
+  start_sample = std::move(beside_sample);
+  first = std::move(beside_first);
+  return Start::change_point;
 }
 
 // Input where d(output)/d(input) vanishes between a and b (derivatives da, db of opposite
@@ -175,11 +340,35 @@ class Continuation {
     derivatives_at(current_, last_derivative_);
   }
 
+  /// The sample reached by the last reach(): the continuation's anchor, or the configuration
+  /// interpolated on a change point the sweep crossed (the anchor is then just past it).
   const Anchor& current() const { return current_; }
 
-  /// Continuation with step halving from the current anchor to `target`. @returns false at a
-  /// dead point (the step fell below options.min_step); `iterations` of the last solve.
+  /// The sweep starts on a change point (start_beside_change_point()): tells whether another
+  /// branch passes there and, with options.switch_branch, takes it.
+  ChangePoint start_on_change_point(const Anchor& start_sample) {
+    ChangePoint cp;
+    cp.input = start_sample.input;
+    cp.q = start_sample.q;
+    Anchor other;
+    int iterations = 0;
+    cp.bifurcation = other_branch(start_sample.q, start_sample.input, current_, current_, other, iterations);
+    if (cp.bifurcation && options_.switch_branch) {
+      current_ = std::move(other);
+      previous_ = before_ = current_;
+      cp.switched = true;
+    }
+    factorised_at_current_ = false;
+    return cp;
+  }
+
+  const Anchor& sample() const { return interpolated_ ? interpolated_sample_ : current_; }
+
+  /// Continuation with step halving from the current anchor to `target`, crossing change points
+  /// on the way (cross()). @returns false at a dead point (the step fell below options.min_step
+  /// and nothing lies beyond); `iterations` of the last solve.
   bool reach(double target, int& iterations) {
+    interpolated_ = false;
     double h = target - current_.input;
     while (current_.input != target) {
       const double remaining = target - current_.input;
@@ -195,13 +384,170 @@ class Continuation {
       } else {
         factorised_at_current_ = false;
         h *= 0.5;
-        if (std::abs(h) < options_.min_step) return false;
+        if (std::abs(h) >= options_.min_step) continue;
+        if (!cross(target, iterations)) return false;
+        if (interpolated_) return true;  // the target lay on the change point
+        h = target - current_.input;
       }
     }
     return true;
   }
 
  private:
+  // The step cannot shrink further: the current anchor is within ~2 min_step of a singular
+  // configuration. At a fold (a toggle or limit position of the input) nothing lies beyond and
+  // this fails: a dead point. At a bifurcation (a change point: a flattened parallelogram may
+  // go on as a parallelogram or fold into an anti-parallelogram) the branch goes on: it is
+  // left behind at two regular anchors, extrapolated past the point (Hermite, O(delta^4)),
+  // re-solved there and kept if its tangent continues the one before (jump_past()); with
+  // options.switch_branch the other branch through the point is taken instead.
+  bool cross(double target, int& iterations) {
+    const double s = current_.input, direction = options_.end >= options_.start ? 1.0 : -1.0;
+      for (const double delta : crossing_steps(options_)) {
+      if (!(delta > 100.0 * options_.min_step)) continue;
+      Anchor r1, r2, c;
+      if (!advance(model_, data_, options_.driver, current_, nullptr, nullptr, s - direction * delta, tight(options_.solver),
+                   options_.velocities, r1, iterations) ||
+          !advance(model_, data_, options_.driver, r1, nullptr, nullptr, s - 2.0 * direction * delta, tight(options_.solver),
+                   options_.velocities, r2, iterations) ||
+          !jump_past(r2, r1, s + direction * delta, c, iterations))
+        continue;
+      ChangePoint cp;
+      cp.input = locate_singular_point(r1, c);
+      Eigen::VectorXd unused;
+      hermite(r1, c, cp.input, cp.q, unused);
+      if (direction * (target - c.input) <= 0.0) {
+        // The target lies on the change point (within delta): interpolated between the regular
+        // anchors either side of it on the continuing branch.
+        interpolate(r1, c, target, interpolated_sample_);
+        interpolated_ = true;
+      }
+      Anchor other;
+      cp.bifurcation = other_branch(cp.q, cp.input, r1, c, other, iterations);
+      if (cp.bifurcation && options_.switch_branch) {
+        c = std::move(other);
+        cp.switched = true;
+      }
+      result_.change_points.push_back(std::move(cp));
+      current_ = std::move(c);
+      previous_ = current_;  // the predictor's history does not reach across the point
+      before_ = current_;
+      factorised_at_current_ = false;
+      last_derivative_.assign(last_derivative_.size(), 0.0);  // extremes are not bracketed across it
+      return true;
+    }
+    return false;
+  }
+
+  // The input of the singular configuration between the regular anchors a and b of one branch
+  // (the continuation stops within ~1e-6 rad of it, where rcond reaches kSingularRcond): by
+  // bisection on the sign of det(Phi_q) along their Hermite curve when it changes, else by
+  // golden-section search for the least singular value (a redundant model's QR has no sign).
+  double locate_singular_point(const Anchor& a, const Anchor& b) {
+    Eigen::VectorXd q, dq;
+    const auto factorised_at = [&](double input) {
+      hermite(a, b, input, q, dq);
+      data_.q = q;
+      data_.inputs(options_.driver) = input;
+      evaluate_constraints(model_, data_, data_.t);
+      factorize(model_, data_);
+    };
+    double lo = a.input, hi = b.input;
+    if (a.determinant_sign * b.determinant_sign < 0) {
+      for (int k = 0; k < 60 && lo != hi; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        factorised_at(mid);
+        if (data_.determinant_sign == 0) return mid;
+        (data_.determinant_sign == a.determinant_sign ? lo : hi) = mid;
+      }
+      return 0.5 * (lo + hi);
+    }
+    // Smallest singular value, to a constant factor, by one step of inverse iteration: V-shaped
+    // in the input about the point (rcond's pivot ratio is too coarse to locate it).
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(data_.phi.size());
+    const auto sigma_at = [&](double input) {
+      factorised_at(input);
+      return data_.singular ? 0.0 : 1.0 / solve_with_jacobian(data_, ones).norm();
+    };
+    constexpr double kGolden = 0.3819660112501051;  // (3 - sqrt 5) / 2
+    for (int k = 0; k < 80 && std::abs(hi - lo) > 1e-15 * std::max(1.0, std::abs(lo)); ++k) {
+      const double x1 = lo + kGolden * (hi - lo), x2 = hi - kGolden * (hi - lo);
+      const double s1 = sigma_at(x1), s2 = sigma_at(x2);
+      (s1 < s2 ? hi : lo) = s1 < s2 ? x2 : x1;
+    }
+    return 0.5 * (lo + hi);
+  }
+
+  // Solves at `input` past a singular point from the Hermite extrapolation of the branch through
+  // the regular anchors a (farther) and b (nearer), and keeps the solution only if it continues
+  // that branch: within a tenth of the step of the prediction and with the tangent it predicts.
+  bool jump_past(const Anchor& a, const Anchor& b, double input, Anchor& to, int& iterations) {
+    Eigen::VectorXd predicted_dq;
+    hermite(a, b, input, to.q, predicted_dq);
+    const Eigen::VectorXd predicted = to.q;
+    data_.q = to.q;
+    data_.inputs(options_.driver) = input;
+    const PositionReport r = solve_position(model_, data_, data_.t, tight(options_.solver));
+    iterations = r.iterations;
+    if (!r.converged || r.singular || data_.rcond < 1e-10) return false;
+    const double h = std::abs(input - b.input), scale = std::max(1.0, predicted_dq.lpNorm<Eigen::Infinity>());
+    if ((data_.q - predicted).lpNorm<Eigen::Infinity>() > 0.1 * h * scale) return false;
+    to.rcond_scale = b.rcond_scale;
+    return settle(input, to) && (to.dq - predicted_dq).lpNorm<Eigen::Infinity>() <= kTangentJump * scale;
+  }
+
+  bool settle(double input, Anchor& to) { return settle_anchor(model_, data_, options_, input, to); }
+
+  // The other branch through the change point, at the input of `c` (on the continuing branch):
+  // it leaves the point along t + beta n, n the Jacobian's null direction there (by inverse
+  // iteration at the nearly singular anchor r1), for some beta the first-order analysis cannot
+  // tell; Newton is tried from a ladder of beta and the first solution that is a distinct
+  // branch through the point (its chord from the point matches its own tangent) is `other`.
+  // None is found where only one branch passes a singular position (a triple parallelogram).
+  bool other_branch(const Eigen::VectorXd& point, double point_input, const Anchor& near, const Anchor& c, Anchor& other,
+                    int& iterations) {
+    data_.q = near.q;
+    data_.inputs(options_.driver) = near.input;
+    evaluate_constraints(model_, data_, data_.t);
+    if (!factorize(model_, data_)) return false;
+    // Inverse iteration on Phi_q^T Phi_q and Phi_q Phi_q^T (n coordinates, m >= n equations:
+    // a redundant model's least-squares solves ignore its exactly redundant rows).
+    Eigen::VectorXd n = Eigen::VectorXd::LinSpaced(near.q.size(), 1.0, 2.0);
+    Eigen::VectorXd psi = Eigen::VectorXd::LinSpaced(data_.phi.size(), 1.0, 2.0);
+    for (int k = 0; k < 3; ++k) {
+      n = solve_with_jacobian(data_, solve_with_jacobian_transpose(data_, n)).normalized();
+      psi = solve_with_jacobian_transpose(data_, solve_with_jacobian(data_, psi)).normalized();  // left null direction
+    }
+    const double delta = c.input - point_input, scale = std::max(1.0, c.dq.lpNorm<Eigen::Infinity>());
+    const Eigen::VectorXd continuing = c.q, w = (scale * std::abs(delta)) * n;
+    // Along q(beta) = c.q + beta w the residual's singular component psi . Phi is, to leading
+    // order, a beta^2 + b beta (zero on the continuing branch, beta = 0): the other branch lies
+    // near beta = -b / a. Then a ladder of beta in case the quadratic model is poor.
+    const auto singular_residual = [&](double beta) {
+      data_.q = continuing + beta * w;
+      evaluate_constraints(model_, data_, data_.t);
+      return psi.dot(data_.phi);
+    };
+    data_.inputs(options_.driver) = c.input;
+    const double g0 = singular_residual(0.0), gp = singular_residual(1.0), gm = singular_residual(-1.0);
+    const double a = 0.5 * (gp + gm) - g0, b = 0.5 * (gp - gm);
+    std::vector<double> betas;
+    if (a != 0.0 && std::isfinite(b / a)) betas.push_back(-b / a);
+    for (const double magnitude : {0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0}) betas.insert(betas.end(), {magnitude, -magnitude});
+    for (const double beta : betas) {
+        data_.q = continuing + beta * w;
+        data_.inputs(options_.driver) = c.input;
+        const PositionReport r = solve_position(model_, data_, data_.t, tight(options_.solver));
+        iterations = r.iterations;
+        if (!r.converged || r.singular || data_.rcond < 1e-10) continue;
+        if ((data_.q - continuing).lpNorm<Eigen::Infinity>() < 0.05 * std::abs(delta) * scale) continue;  // the same
+        if (!settle(c.input, other)) continue;
+        const Eigen::VectorXd chord = (other.q - point) / delta;
+        if ((chord - other.dq).lpNorm<Eigen::Infinity>() <= 0.2 * std::max(1.0, other.dq.lpNorm<Eigen::Infinity>()))
+          return true;
+      }
+    return false;
+  }
   void derivatives_at(const Anchor& a, std::vector<double>& d) {
     data_.q = a.q;
     for (std::size_t o = 0; o < options_.outputs.size(); ++o)
@@ -236,6 +582,8 @@ class Continuation {
   bool factorised_at_current_ = true;
   std::vector<double> last_derivative_, derivative_;  // output derivatives, for the extremes
   std::vector<Anchor> last_significant_;
+  Anchor interpolated_sample_;
+  bool interpolated_ = false;
 };
 
 // Hands an anchor to the visitor through one reused sample (no allocation per position).
@@ -262,6 +610,7 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
     throw std::invalid_argument("sweep: driver index " + std::to_string(options.driver) + " out of range");
   if (!(options.step > 0.0)) throw std::invalid_argument("sweep: the step must be positive");
   result.dead_points.clear();
+  result.change_points.clear();
   result.extremes.clear();
   result.assembled = false;
   result.complete = false;
@@ -270,17 +619,18 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
   const double step = options.step * direction;
   const long count = sweep_sample_count(options);
 
-  const PositionReport first = solve_at(model, data, options.driver, options.start, options.solver);
-  if (!first.converged || first.singular) {
+  Anchor start_sample, first_anchor;
+  PositionReport first;
+  const Start start = start_sweep(model, data, options, first, start_sample, first_anchor);
+  if (start == Start::failed) {
     result.message = first.message.empty() ? "singular Jacobian at the first input" : first.message;
     return;
   }
   result.assembled = true;
   SweepSample scratch;
-  Continuation run(model, data, options,
-                   result, Anchor{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
-                                  data.determinant_sign});
-  visit_anchor(run.current(), first.iterations, options.velocities, scratch, visit);
+  Continuation run(model, data, options, result, first_anchor);
+  if (start == Start::change_point) result.change_points.push_back(run.start_on_change_point(start_sample));
+  visit_anchor(start_sample, first.iterations, options.velocities, scratch, visit);
   double last_visited = options.start;
   for (long k = 1; k < count; ++k) {
     const double planned = options.start + step * static_cast<double>(k);
@@ -297,10 +647,14 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
       if (last_visited != run.current().input) visit_anchor(run.current(), iterations, options.velocities, scratch, visit);
       break;
     }
-    visit_anchor(run.current(), iterations, options.velocities, scratch, visit);
+    visit_anchor(run.sample(), iterations, options.velocities, scratch, visit);
     last_visited = target;
   }
   result.complete = result.dead_points.empty();
+}
+
+double change_point_offset(const SweepOptions& options) {
+  return std::min(0.25 * options.step, std::max(1e-2 * options.step, 1e-5));
 }
 
 long sweep_sample_count(const SweepOptions& options) {

@@ -248,36 +248,131 @@ TEST(KinCommand, AnUnreachableSweepStartSweepsTheReachableRange) {
   EXPECT_NEAR(at["dead_points"][0]["input_deg"].get<double>(), lower, 1e-4);
 }
 
+// The crossed (anti-parallelogram) branch of the 40/100/40/100 four-bar at crank angle theta2
+// [deg]: B is the mirror image of the parallelogram's B = O4 + (A - O2) in the line A O4 (both
+// satisfy |AB| = 100 and |O4 B| = 40); returns the rocker angle [deg] (hand derivation).
+double anti_parallelogram_theta4(double theta2_deg) {
+  const double t = theta2_deg * M_PI / 180;
+  const double ax = 40 * std::cos(t), ay = 40 * std::sin(t), bx = 100 + ax, by = ay;
+  const double ux = 100 - ax, uy = -ay, l = std::hypot(ux, uy), ex = ux / l, ey = uy / l;
+  const double vx = bx - ax, vy = by - ay, along = vx * ex + vy * ey;
+  const double rx = ax + 2 * along * ex - vx, ry = ay + 2 * along * ey - vy;
+  return std::atan2(ry, rx - 100) * 180 / M_PI;
+}
+
+double angle_gap_deg(double a, double b) { return std::abs(std::remainder(a - b, 360.0)); }
+
 // A parallelogram four-bar (40/100/40/100 mm): on the drawn branch the rocker stays parallel to
-// the crank, theta4 = theta2 exactly, up to 180 deg where all links lie flat and the
-// anti-parallelogram branch crosses. The sweep stops there and says it is a change point, not a
-// dead point the driver cannot pass (issue 13 item 3; crossing it is still to come).
-TEST(KinCommand, AParallelogramStopsAtItsChangePointSayingSo) {
+// the crank, theta4 = theta2 exactly, through 180 deg where all links lie flat and the
+// anti-parallelogram branch crosses (issue 13 item 3): the sweep goes on along the branch whose
+// motion is smooth and notes the change point; --branch switch takes the crossed branch there.
+TEST(KinCommand, AParallelogramCrossesItsChangePoints) {
   const FourBarFile parallelogram{"parallelogram", "crank", "coupler", "rocker", 40, 100, 40, 100, 40, 0, 40};
   const std::string file = write(scratch_dir("kin-parallelogram"), "parallelogram.yaml", four_bar_yaml(parallelogram));
   const auto j = run_json(shell_quote(file) + " --sweep 10:350:10");
-  ASSERT_GE(j["positions"].size(), 17u);
+  ASSERT_EQ(j["positions"].size(), 35u);
   for (const auto& p : j["positions"]) {
-    EXPECT_NEAR(p["q"]["rocker.angle_deg"].get<double>(), p["input_deg"].get<double>(), 1e-6);
-    EXPECT_NEAR(p["q"]["coupler.angle_deg"].get<double>(), 0.0, 1e-6);
+    EXPECT_LT(angle_gap_deg(p["q"]["rocker.angle_deg"].get<double>(), p["input_deg"].get<double>()), 1e-6);
+    EXPECT_LT(angle_gap_deg(p["q"]["coupler.angle_deg"].get<double>(), 0.0), 1e-6);
   }
-  ASSERT_EQ(j["dead_points"].size(), 1u);
-  EXPECT_NEAR(j["dead_points"][0]["input_deg"].get<double>(), 180.0, 1e-4);
-  EXPECT_NE(j["warnings"][0].get<std::string>().find("change point at input"), std::string::npos) << j["warnings"];
-  EXPECT_EQ(j["warnings"].size(), 1u) << j["warnings"];  // stopped at the flat position: not passed
+  EXPECT_TRUE(j["dead_points"].empty());
+  ASSERT_EQ(j["change_points"].size(), 1u);
+  EXPECT_NEAR(j["change_points"][0]["input_deg"].get<double>(), 180.0, 1e-6);
+  EXPECT_EQ(j["change_points"][0]["branch"], "continued");
+  EXPECT_TRUE(j["change_points"][0]["bifurcation"].get<bool>());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("change point at input 180.000000 deg"), std::string::npos) << j["warnings"];
 
-  // Drawn as an anti-parallelogram (the crossed branch at 40 deg: theta3 = -40.68, theta4 =
-  // -80.68 deg by the law of cosines) the sweep goes through the flat position at 180 deg
-  // without stopping; past it the branch is not checked, and the report says so.
-  FourBarFile anti = parallelogram;
-  anti.theta3 = -40.68, anti.theta4 = -80.68;
-  const auto k = run_json(shell_quote(write(scratch_dir("kin-anti-parallelogram"), "anti.yaml", four_bar_yaml(anti))) +
-                          " --sweep 40:300:10");
-  EXPECT_NEAR(k["positions"][0]["q"]["rocker.angle_deg"].get<double>(), -80.68, 0.01);
-  bool passed = false;
-  for (const auto& w : k["warnings"])
-    passed = passed || w.get<std::string>().find("passed the change point at crank angle 180 deg") != std::string::npos;
-  EXPECT_TRUE(passed) << k["warnings"];
+  // The other branch past 180 deg: the anti-parallelogram.
+  const auto k = run_json(shell_quote(file) + " --sweep 10:350:10 --branch switch");
+  ASSERT_EQ(k["positions"].size(), 35u);
+  for (const auto& p : k["positions"]) {
+    const double theta2 = p["input_deg"].get<double>(), theta4 = p["q"]["rocker.angle_deg"].get<double>();
+    EXPECT_LT(angle_gap_deg(theta4, theta2 <= 180 ? theta2 : anti_parallelogram_theta4(theta2)), 1e-5) << theta2;
+  }
+  EXPECT_EQ(k["change_points"][0]["branch"], "switched");
+
+  // A sweep that starts on the flat position at 0 deg and ends on the one at 360 deg.
+  const auto z = run_json(shell_quote(file) + " --sweep 0:360:10");
+  ASSERT_EQ(z["positions"].size(), 37u);
+  for (const auto& p : z["positions"])
+    EXPECT_LT(angle_gap_deg(p["q"]["rocker.angle_deg"].get<double>(), p["input_deg"].get<double>()), 1e-5);
+  ASSERT_EQ(z["change_points"].size(), 3u);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(z["change_points"][c]["input_deg"].get<double>(), 180.0 * c, 1e-6);
+}
+
+// Drawn as an anti-parallelogram (the crossed branch at 40 deg: theta3 = -40.68, theta4 =
+// -80.68 deg), the sweep stays on it through the flat position at 180 deg (it used to jump to
+// the parallelogram there silently), from a start on the flat position at 0 deg too.
+TEST(KinCommand, AnAntiParallelogramStaysOnItsBranch) {
+  FourBarFile anti{"anti-parallelogram", "crank", "coupler", "rocker", 40, 100, 40, 100, 40, -40.68, -80.68};
+  const std::string file = write(scratch_dir("kin-anti-parallelogram"), "anti.yaml", four_bar_yaml(anti));
+  for (const std::string sweep : {"40:300:10", "40:300:7", "0:360:1"}) {
+    const auto k = run_json(shell_quote(file) + " --sweep " + sweep);
+    ASSERT_FALSE(k["positions"].empty()) << sweep;
+    for (const auto& p : k["positions"]) {
+      const double theta2 = p["input_deg"].get<double>();
+      EXPECT_LT(angle_gap_deg(p["q"]["rocker.angle_deg"].get<double>(), anti_parallelogram_theta4(theta2)), 1e-5)
+          << sweep << " at " << theta2;
+    }
+    EXPECT_TRUE(k["dead_points"].empty()) << sweep;
+    bool at_180 = false;
+    for (const auto& c : k["change_points"]) at_180 = at_180 || std::abs(c["input_deg"].get<double>() - 180) < 1e-5;
+    EXPECT_TRUE(at_180) << sweep << k["change_points"];
+  }
+}
+
+// A triple parallelogram (a third crank O6 C parallel to the other two, rod A B C): Gruebler
+// says 0, it moves with one redundant constraint, and only the parallelogram branch exists.
+// Its flat positions are singular but no branch crosses: the sweep passes them, says so, and
+// every crank stays parallel (theta4 = theta6 = theta2).
+TEST(KinCommand, ATripleParallelogramPassesItsFlatPositions) {
+  const std::string yaml =
+      "mechanism: triple parallelogram\nground: {O2: [0, 0], O4: [100, 0], O6: [200, 0]}\nlinks:\n"
+      "  crank: {points: {O2: [0, 0], A: [40, 0]}, angle: 40 deg}\n"
+      "  rod: {points: {A: [0, 0], B: [100, 0], C: [200, 0]}, angle: 0 deg}\n"
+      "  rocker: {points: {O4: [0, 0], B: [40, 0]}, angle: 40 deg}\n"
+      "  third: {points: {O6: [0, 0], C: [40, 0]}, angle: 40 deg}\njoints:\n"
+      "  - {name: O2, type: revolute, at: [crank.O2, ground.O2]}\n  - {name: A, type: revolute, at: [crank.A, rod.A]}\n"
+      "  - {name: B, type: revolute, at: [rod.B, rocker.B]}\n  - {name: O4, type: revolute, at: [rocker.O4, ground.O4]}\n"
+      "  - {name: C, type: revolute, at: [rod.C, third.C]}\n  - {name: O6, type: revolute, at: [third.O6, ground.O6]}\n"
+      "drivers:\n  - {name: theta2, type: angle, link: crank}\n";
+  const auto j = run_json(shell_quote(write(scratch_dir("kin-triple"), "triple.yaml", yaml)) + " --sweep 10:350:10");
+  ASSERT_EQ(j["positions"].size(), 35u);
+  for (const auto& p : j["positions"]) {
+    const double theta2 = p["input_deg"].get<double>();
+    EXPECT_LT(angle_gap_deg(p["q"]["rocker.angle_deg"].get<double>(), theta2), 1e-6);
+    EXPECT_LT(angle_gap_deg(p["q"]["third.angle_deg"].get<double>(), theta2), 1e-6);
+  }
+  EXPECT_TRUE(j["dead_points"].empty());
+  ASSERT_EQ(j["change_points"].size(), 1u);
+  EXPECT_NEAR(j["change_points"][0]["input_deg"].get<double>(), 180.0, 1e-5);
+  EXPECT_FALSE(j["change_points"][0]["bifurcation"].get<bool>());
+}
+
+// The seed-004 pantograph's parallelogram O P R S lies flat where the coupler QP is square to
+// the crank OP: then |OP|^2 = Q.P and |QP|^2 = |OP|^2 + |OQ|^2 - 2 Q.P give s^2 = 2 l1^2 (s =
+// 212.132 mm) and 200 cos(phi1) - s sin(phi1) = 150, phi1 = acos(150 / 291.548) - 46.686 =
+// 12.3501 deg (hand derivation). Reaching --at 60 from the drawing at -80 deg crosses it on the
+// parallelogram (the arm RS turns with the crank: arm = phi1 + 180 deg; the link OS with PR:
+// link = coupler + 90 deg); with --branch switch on the crossed one, where S is the mirror of
+// the parallelogram's S in the line O R: link angle 2 * atan2(R) - 210 deg.
+TEST(KinCommand, PantographReachesPastItsChangePoint) {
+  const std::string file = shell_quote(kExamples + "pantograph.yaml") + " --driver phi1 --at 60";
+  const auto j = run_json(file);
+  ASSERT_EQ(j["positions"].size(), 1u);
+  ASSERT_EQ(j["change_points"].size(), 1u);
+  EXPECT_NEAR(j["change_points"][0]["input_deg"].get<double>(), std::acos(150 / std::hypot(200.0, 150 * M_SQRT2)) * 180 / M_PI -
+                                                                       std::atan2(150 * M_SQRT2, 200.0) * 180 / M_PI, 1e-5);
+  const auto& q = j["positions"][0]["q"];
+  EXPECT_NEAR(q["arm.angle_deg"].get<double>(), 240.0, 1e-6);
+  EXPECT_NEAR(q["link.angle_deg"].get<double>(), q["coupler.angle_deg"].get<double>() + 90.0, 1e-6);
+  const auto k = run_json(file + " --branch switch");
+  ASSERT_EQ(k["positions"].size(), 1u);
+  // R = P + 100 (cos 210, sin 210) with P = 150 (cos 60, sin 60), coupler at 120 deg.
+  const double rx = 75 - 50 * std::sqrt(3.0), ry = 75 * std::sqrt(3.0) - 50;
+  const double mirrored = 2 * std::atan2(ry, rx) * 180 / M_PI - 210;
+  EXPECT_LT(angle_gap_deg(k["positions"][0]["q"]["link.angle_deg"].get<double>(), mirrored), 1e-6);
+  EXPECT_EQ(k["change_points"][0]["branch"], "switched");
 }
 
 // Norton's four-bar with coupler and rocker drawn at 0 deg (only the crank drawn at 40 deg), and
@@ -311,13 +406,19 @@ TEST(KinCommand, ALazyDrawingAssembles) {
   EXPECT_NEAR(run_json(shell_quote(half) + " --at 40")["positions"][0]["q"]["rocker.angle_deg"].get<double>(), 57.32488, 1e-3);
 }
 
+// The pantograph's crank cannot pass the position where the coupler QP lies horizontal, with P
+// 250 mm left of the guide x = 200 mm: 150 cos(phi1) = -50, phi1 = acos(-1/3) = 109.4712 deg.
 TEST(KinCommand, CannotAssembleIsAWarning) {
-  const auto r = run_gearkit("kin " + shell_quote(kExamples + "pantograph.yaml") + " --driver phi1 --at 60 --format json");
+  const auto r = run_gearkit("kin " + shell_quote(kExamples + "pantograph.yaml") + " --driver phi1 --at 120 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["positions"].empty());
   ASSERT_FALSE(j["warnings"].empty());
-  EXPECT_NE(j["warnings"][0].get<std::string>().find("cannot"), std::string::npos);
+  bool cannot = false;
+  for (const auto& w : j["warnings"]) cannot = cannot || w.get<std::string>().find("cannot") != std::string::npos;
+  EXPECT_TRUE(cannot) << j["warnings"];
+  ASSERT_EQ(j["dead_points"].size(), 1u);
+  EXPECT_NEAR(j["dead_points"][0]["input_deg"].get<double>(), std::acos(-1.0 / 3.0) * 180 / M_PI, 1e-4);
 }
 
 TEST(KinCommand, BadInput) {

@@ -45,9 +45,10 @@ class Data {
   bool factored = false;
   bool singular = false;
   int determinant_sign = 0;  ///< sign of det(Phi_q) for square systems (0 if singular/unknown)
-  /// Reciprocal condition estimate of Phi_q (square systems; 1 for redundant ones): the ratio
-  /// of the smallest to the largest LU pivot, or below 1e-4 the reciprocal of the 1-norm
-  /// condition estimate. Small values mean a dead point or toggle is near.
+  /// Reciprocal condition estimate of Phi_q: the ratio of the smallest to the largest LU pivot,
+  /// or below 1e-4 the reciprocal of the 1-norm condition estimate (square systems); the ratio
+  /// of the smallest to the largest diagonal entry of the pivoted QR's R (redundant ones).
+  /// Small values mean a dead point, toggle or change point is near.
   double rcond = 0.0;
 
   /// Phi_q as a dense matrix (a copy).

@@ -21,6 +21,9 @@ struct SweepOptions {
   /// declared a dead point; also the precision of the dead point's input.
   double min_step = 1e-10;
   bool velocities = true;    ///< also solve qd and qdd at every sample
+  /// At each change point crossed, go on along the other branch through it instead of the one
+  /// whose tangent continues the motion (a parallelogram folding into an anti-parallelogram).
+  bool switch_branch = false;
 };
 
 struct SweepSample {
@@ -49,9 +52,22 @@ struct OutputExtreme {
   Eigen::VectorXd dq;        ///< dq/d(input) there: velocity ratios
 };
 
+/// A singular configuration the sweep crossed (or started on) where the driver does move the
+/// mechanism on: usually a bifurcation, where two branches of the motion meet (the flat
+/// position of a four-bar with s + l = p + q); the sweep goes on along the branch whose tangent
+/// dq/d(input) continues the one before, unless SweepOptions::switch_branch. Also a position
+/// where the Jacobian loses rank on the only branch (a triple parallelogram lying flat).
+struct ChangePoint {
+  double input = 0.0;        ///< located to SweepOptions::min_step
+  Eigen::VectorXd q;         ///< the configuration there
+  bool bifurcation = false;  ///< another branch passes here (else a singular position on the only one)
+  bool switched = false;     ///< the sweep went on along the other branch
+};
+
 struct SweepResult {
   std::vector<SweepSample> samples;      ///< in sweep order; stops at a dead point
   std::vector<DeadPoint> dead_points;
+  std::vector<ChangePoint> change_points;  ///< crossed, in sweep order
   std::vector<OutputExtreme> extremes;
   bool assembled = false;                ///< false if the first input could not be assembled
   bool complete = false;                 ///< true if the sweep reached `end`
@@ -61,9 +77,16 @@ struct SweepResult {
 /// Sweeps driver `options.driver` from start to end. The first position is assembled from
 /// data.q (the drawn configuration or a user's guess, which picks the branch). Each next
 /// position starts from a second-order prediction along the input sensitivity; a step that
-/// does not converge, changes the sign of det(Phi_q) or jumps more than 0.1 rad beyond the
-/// prediction is halved, down to options.min_step, where a dead point is declared and the
-/// sweep stops (it never jumps across a toggle to another branch). The other drivers keep
+/// does not converge, changes the sign of det(Phi_q), jumps more than 0.1 rad beyond the
+/// prediction or whose tangent dq/d(input) departs from the predicted one by more than 10 %
+/// (it landed on another branch) is halved, down to options.min_step. There the configuration
+/// is singular. At a change point (a bifurcation) the sweep goes on (see ChangePoint): the
+/// branch is re-solved a little past the point from a Hermite extrapolation of two regular
+/// anchors before it and kept if its tangent continues theirs; a sample that falls on the
+/// point is interpolated between the anchors either side (q to O(h^4), qd and qdd to O(h^2),
+/// h <= 1e-2 of the step). Otherwise (a toggle or limit position: nothing lies beyond) a dead
+/// point is declared and the sweep stops (it never jumps across a toggle to another branch).
+/// A start on a change point is assembled just past it, nearest data.q. The other drivers keep
 /// their data.inputs values. Bounded: at most ~60 halvings of max_iterations each per sample.
 /// @throws std::invalid_argument for a bad driver index or step <= 0.
 SweepResult sweep(const Model& model, Data& data, const SweepOptions& options);
@@ -81,6 +104,14 @@ using SampleVisitor = std::function<void(const SweepSample&)>;
 /// left as it was), so memory does not grow with the number of samples; dead points, extremes
 /// and the outcome are in `result` as above.
 void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result, const SampleVisitor& visit);
+
+/// How far from a change point the sweep takes its branch up again [input unit]: far enough
+/// that Phi_q there is well conditioned (its smallest singular value grows with the distance),
+/// near enough that the Hermite extrapolation across is exact to round-off, and within a quarter
+/// of the step so that no sample is skipped: min(step / 4, max(step / 100, 1e-5)). A sweep that
+/// starts on a change point assembles at twice this past the start (a caller that reaches the
+/// start by continuation from a drawing should stop there to keep the drawing's branch).
+double change_point_offset(const SweepOptions& options);
 
 /// The number of samples the sweep plans: floor(|end - start| / step) + 1 (fewer if it stops at
 /// a dead point). Requires options.step > 0.
