@@ -222,8 +222,8 @@ TEST(SynthCommand, GrashofLineIsInMillimetres) {
 
 constexpr double kPi = std::numbers::pi;
 
-// Chebyshev spacing of n precision points over [xs, xf] (Norton, Design of Machinery, sec. 5.14;
-// Freudenstein's three-point synthesis): x_j = (xs + xf)/2 - (xf - xs)/2 cos((2j - 1) pi / (2n)).
+// Chebyshev spacing of n precision points over [xs, xf] (Hartenberg & Denavit, Kinematic Synthesis
+// of Linkages, 1964; docs/synthesis.md): x_j = (xs + xf)/2 - (xf - xs)/2 cos((2j - 1) pi / (2n)).
 double chebyshev(double xs, double xf, int j, int n) {
   return (xs + xf) / 2 - (xf - xs) / 2 * std::cos((2 * j - 1) * kPi / (2 * n));
 }
