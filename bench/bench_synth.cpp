@@ -67,11 +67,13 @@ void BM_FunctionGeneration_Log10(benchmark::State& state) {
 BENCHMARK(BM_FunctionGeneration_Log10)->Unit(benchmark::kMicrosecond);
 
 // The ten-point ellipse of the path-synthesis benchmark, default budget (300 000 evaluations,
-// 16 restarts); the seed is the repetition number, so the repetitions show the spread.
+// 16 restarts); the seed is the repetition number, so the repetitions show the spread. The
+// targets are those of examples/synthesis/path_ellipse.yaml, bit for bit (the published rounded
+// coordinates, converted as the command converts mm): seed 1 here is `gearkit synth path
+// examples/synthesis/path_ellipse.yaml` (docs/benchmarks.md).
 void BM_Path_TenPointEllipse(benchmark::State& state) {
   gs::PathTask t;
-  for (int k = 0; k < 10; ++k)
-    t.points.push_back(gs::Vec2(10 + 10 * std::cos(40 * k * deg), 10 + 8 * std::sin(40 * k * deg)) / 1000);
+  t.points = gs::testing::published_ellipse_points();
   static unsigned seed = 0;
   t.budget.seed = ++seed;
   gs::PathResult r;

@@ -1,7 +1,8 @@
 // Tests of gearkit/cam/follower_dynamics.hpp: kinetostatic force against Norton's equation,
 // jump speed against the closed form of an eccentric cam and against a speed sweep, spring
 // sizing, camshaft torque by virtual power against the moment of the contact force and against
-// the work lost per cycle, Hertz stress against two textbook forms.
+// the work lost per cycle, Hertz stress against two textbook forms, a flat face's Hertz stress and
+// sliding speed and a roller's speed and traction ratio against hand derivations.
 #include <gearkit/cam/follower_dynamics.hpp>
 
 #include "cam_test_support.hpp"
@@ -229,6 +230,82 @@ TEST(FollowerDynamics, RollerRollsWithTheProfileSpeedOverItsRadius) {
   const double E_star = contact_modulus(206e9, 0.3, 206e9, 0.3);
   EXPECT_NEAR(s.hertz_stress, hertz_line_stress(s.contact_force, 0.015, 0.0737, 0.0125, E_star), 1e-6 * s.hertz_stress);
   EXPECT_NEAR(s.rho_cam, 0.0737, 1e-9);
+}
+
+/// Cycloidal law over a segment of beta rad, lift L: s, s', s'' against theta (Norton, Design of
+/// Machinery, ch. 8, cycloidal displacement: s = L (x - sin(2 pi x) / (2 pi)), x = theta / beta).
+struct Svaj {
+  double s, v, a;
+};
+Svaj cycloidal(double L, double beta, double theta) {
+  const double x = theta / beta;
+  return {L * (x - std::sin(2 * pi * x) / (2 * pi)), L / beta * (1 - std::cos(2 * pi * x)),
+          2 * pi * L / (beta * beta) * std::sin(2 * pi * x)};
+}
+
+TEST(FollowerDynamics, FlatFaceHertzIsLineContactOnTheCamsRadiusOfCurvature) {
+  // A flat face on a convex cam: a line contact between a cylinder of the cam's radius of curvature
+  // rho and a plane, p0 = sqrt(P E* / (pi rho)), P = F / L (Johnson, Contact Mechanics, eq. 4.45
+  // with 1/R = 1/rho + 1/infinity). For a translating flat face normal to its path, rho = R_b + s +
+  // s'' (Norton, Design of Machinery, ch. 8, flat-faced follower), the normal is along the path (F_n = Q) and the
+  // cam's point at the contact (height R_b + s) slides along the face at w (R_b + s).
+  const double Rb = 40, L_rise = 20, beta = rad(120), w = 30;
+  CamDesign d{gearkit::cam::testing::rise_dwell_return(L_rise), translating(Contact::flat_face), Rb, Rotation::ccw};
+  validate(d);
+  FollowerTrain t;
+  t.mass = 2, t.spring_rate = 2000, t.preload = 50, t.damping = 10;
+  ContactMaterial m;
+  m.width = 0.012, m.E_cam = 206e9, m.nu_cam = 0.3, m.E_follower = 100e9, m.nu_follower = 0.25;
+  const double E_star = 1 / ((1 - 0.09) / 206e9 + (1 - 0.0625) / 100e9);  // Johnson, eq. 4.22
+  for (double deg : {10.0, 30.0, 55.0, 75.0, 100.0, 115.0}) {
+    const Svaj k = cycloidal(L_rise, beta, rad(deg));
+    const double Q = t.mass * k.a * 1e-3 * w * w + t.damping * k.v * 1e-3 * w + t.spring_rate * k.s * 1e-3 + t.preload;
+    const double rho = (Rb + k.s + k.a) * 1e-3;
+    const DynamicState s = dynamic_state(d, t, w, rad(deg), &m);
+    ASSERT_GT(Q, 0) << deg;
+    EXPECT_NEAR(s.contact_force, Q, 1e-9 * Q) << deg;
+    EXPECT_NEAR(s.rho_cam, rho, 1e-9) << deg;
+    EXPECT_NEAR(s.hertz_stress, std::sqrt(Q / m.width * E_star / (pi * rho)), 1e-7 * s.hertz_stress) << deg;
+    EXPECT_NEAR(s.sliding_speed, w * (Rb + k.s) * 1e-3, 1e-9) << deg;
+  }
+  // On the base circle (a dwell): rho = R_b, the preload alone.
+  const DynamicState b = dynamic_state(d, t, w, rad(330), &m);
+  EXPECT_NEAR(b.hertz_stress, std::sqrt(50 / m.width * E_star / (pi * Rb * 1e-3)), 1e-7 * b.hertz_stress);
+}
+
+TEST(FollowerDynamics, RollerSpeedAndTractionRatioAreTheRollingRollersByHand) {
+  // A radial translating roller on a cam turning at w (ccw). In the cam's frame the roller centre
+  // runs along the pitch curve r = R_p + s (R_p = R_b + R_r) at V_p = w sqrt(r^2 + s'^2), and the
+  // contact point, where it rolls without slip, is its instantaneous centre: it turns at V_p / R_r
+  // relative to the cam (clockwise, as it goes round the cam clockwise), so at W = w - V_p / R_r
+  // absolute, which is its speed on a translating follower's pin (-w R_b / R_r on the base circle).
+  // Its angular acceleration w dW/dtheta = -w^2 s' (r + s'') / (R_r sqrt(r^2 + s'^2)) needs the
+  // tangential force I |alpha| / R_r at the contact; the normal force is Q / cos(phi), tan(phi) =
+  // s' / r (Norton, Design of Machinery, ch. 8, pressure angle with no eccentricity).
+  const double Rb = 40, Rr = 10, L_rise = 20, beta = rad(120), w = 40;
+  CamDesign d{gearkit::cam::testing::rise_dwell_return(L_rise), translating(Contact::roller, Rr), Rb, Rotation::ccw};
+  validate(d);
+  FollowerTrain t;
+  t.mass = 1.5, t.spring_rate = 3000, t.preload = 80, t.roller_inertia = 4e-6;
+  for (double deg : {5.0, 20.0, 45.0, 60.0, 80.0, 100.0, 118.0}) {
+    const Svaj k = cycloidal(L_rise, beta, rad(deg));
+    const double r = (Rb + Rr + k.s) * 1e-3, v = k.v * 1e-3, a = k.a * 1e-3;
+    const double Vp = w * std::hypot(r, v);
+    const double spin = w - Vp / (Rr * 1e-3);
+    const double alpha = -w * w * v * (r + a) / (Rr * 1e-3 * std::hypot(r, v));
+    const double Q = t.mass * a * w * w + t.spring_rate * k.s * 1e-3 + t.preload;
+    const double Fn = Q * std::hypot(r, v) / r;
+    const DynamicState s = dynamic_state(d, t, w, rad(deg), nullptr);
+    EXPECT_NEAR(s.roller_speed, spin, 1e-9 * std::abs(spin)) << deg;
+    EXPECT_NEAR(s.contact_force, Fn, 1e-9 * Fn) << deg;
+    EXPECT_NEAR(s.traction / s.contact_force, t.roller_inertia * std::abs(alpha) / (Rr * 1e-3) / Fn,
+                1e-6 * s.traction / s.contact_force + 1e-12)
+        << deg;
+  }
+  // On a dwell the roller turns steadily: no traction needed.
+  const DynamicState dw = dynamic_state(d, t, w, rad(150), nullptr);
+  EXPECT_NEAR(dw.roller_speed, -w * (Rb + L_rise) / Rr, 1e-9);
+  EXPECT_NEAR(dw.traction, 0, 1e-9);
 }
 
 }  // namespace

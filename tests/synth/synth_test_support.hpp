@@ -105,4 +105,20 @@ inline FunctionTask log10_task() {
   return t;
 }
 
+/// The ten-point elliptic path of the four-bar path-synthesis benchmark set (Acharyya & Mandal
+/// 2009, Mechanism and Machine Theory 44; Yao et al. 2022, Mechanical Sciences 13: 79-87): points
+/// every 40 deg on the ellipse of semi-axes 10 and 8 mm about (10, 10) mm, first and last the
+/// same, no prescribed timing: the published coordinates, rounded as printed, as in
+/// examples/synthesis/path_ellipse.yaml [m]. Converted as `gearkit synth` converts the file's mm
+/// (x * 1e-3, io's unit factor), so that the library, the bench and the command start the
+/// optimiser from bit-identical targets: its random search follows the last bits of its input,
+/// and a seed only reproduces a run on the same bits (docs/synthesis.md, "Path generation").
+inline std::vector<Vec2> published_ellipse_points() {
+  const double xy[10][2] = {{20, 10},       {17.66, 15.142},   {11.736, 17.878}, {5, 16.928},      {0.60307, 12.736},
+                            {0.60307, 7.2638}, {5, 3.0718},    {11.736, 2.1215}, {17.66, 4.8577}, {20, 10}};
+  std::vector<Vec2> p;
+  for (const auto& q : xy) p.push_back(Vec2(q[0] * 1e-3, q[1] * 1e-3));
+  return p;
+}
+
 }  // namespace gearkit::synth::testing

@@ -14,17 +14,7 @@ using namespace gearkit::synth::testing;
 
 namespace {
 
-// The ten-point elliptic path of the four-bar path-synthesis benchmark set (Acharyya & Mandal
-// 2009, Mechanism and Machine Theory 44; Yao et al. 2022, Mechanical Sciences 13: 79-87): points
-// every 40 deg on the ellipse of semi-axes 10 and 8 mm about (10, 10) mm, first and last the
-// same, no prescribed timing (the published coordinates, rounded as printed).
-std::vector<Vec2> ellipse_points() {
-  const double xy[10][2] = {{20, 10},       {17.66, 15.142},   {11.736, 17.878}, {5, 16.928},      {0.60307, 12.736},
-                            {0.60307, 7.2638}, {5, 3.0718},    {11.736, 2.1215}, {17.66, 4.8577}, {20, 10}};
-  std::vector<Vec2> p;
-  for (const auto& q : xy) p.push_back(Vec2(q[0], q[1]) / 1000);
-  return p;
-}
+std::vector<Vec2> ellipse_points() { return gearkit::synth::testing::published_ellipse_points(); }
 
 // Drives the written mechanism to each target's crank angle; the largest miss of P [m].
 double solver_miss(const PathResult& r, const std::vector<Vec2>& targets) {
