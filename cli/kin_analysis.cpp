@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 namespace gearkit::cli {
 
@@ -66,10 +67,12 @@ void note_change_points(const mechanism::Mechanism& mech, int driver, const kin:
     }
     a.warnings.push_back(fmt::format(
         "change point at input {:.6f} {}: two branches of the motion cross there (e.g. a parallelogram lying flat); "
-        "{}", shown_input(mech, driver, c.input), input_unit(mech, driver),
+        "{}{}", shown_input(mech, driver, c.input), input_unit(mech, driver),
         c.switched ? "the sweep went on along the other branch (--branch switch)"
                    : "the sweep went on along the branch that continues the motion smoothly (--branch switch takes the "
-                     "other)"));
+                     "other)",
+        mech.model.has_loads() ? "; a position on it has its driving effort by virtual power and no reactions (they are "
+                                 "statically indeterminate there)" : ""));
   }
 }
 
@@ -136,8 +139,27 @@ std::optional<double> reachable_start(const mechanism::Mechanism& mech, kin::Dat
 
 }  // namespace
 
+namespace {
+
+// The loads at a change point: Phi_q is singular, the multipliers are not unique (the reactions
+// are statically indeterminate), but the driving effort follows from virtual power along the
+// branch followed, -Q* . dq, finite and continuous with its neighbours.
+void efforts_at_change_point(const kin::Model& m, const kin::Data& data, int driver, const Eigen::VectorXd& dq,
+                             kin::ForceAnalysis& f) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  f = kin::ForceAnalysis{};
+  f.applied = kin::applied_forces(m, data);
+  f.determinate = false;
+  for (std::size_t k = 0; k < m.drivers().size(); ++k) {
+    f.effort_virtual_power.push_back(static_cast<int>(k) == driver ? -f.applied.dot(dq) : nan);
+    f.effort_lagrange.push_back(nan);
+  }
+}
+
+}  // namespace
+
 void describe_position(const mechanism::Mechanism& mech, const std::optional<kin::FourBar>& four_bar, kin::Data& data,
-                       int driver, double input, const Eigen::VectorXd* known_dq, KinPosition& p) {
+                       int driver, double input, const Eigen::VectorXd* known_dq, KinPosition& p, bool on_change_point) {
   p.input = input;
   p.q = data.q;
   p.qd = data.qd;
@@ -153,8 +175,13 @@ void describe_position(const mechanism::Mechanism& mech, const std::optional<kin
   }
   if (four_bar) p.transmission_angle = kin::transmission_angle(*four_bar, data);
   else p.transmission_angle.reset();
-  if (mech.model.has_loads()) p.forces = kin::solve_forces(mech.model, data, driver);
-  else p.forces.reset();
+  if (mech.model.has_loads()) {
+    if (!p.forces) p.forces.emplace();
+    if (on_change_point && have_dq) efforts_at_change_point(mech.model, data, driver, dq, *p.forces);
+    else kin::solve_forces(mech.model, data, driver, *p.forces);  // reuses the last position's storage
+  } else {
+    p.forces.reset();
+  }
 }
 
 KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, int driver, std::optional<double> at,
@@ -201,13 +228,17 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
     progress.update(done++);
     probe.q = sample.q;
     probe.inputs(driver) = sample.input;
-    if (loads || sample.qd.size() == 0) {
-      kin::solve_at(m, probe, driver, sample.input);  // the reactions need Phi_q factorised here
+    if (sample.qd.size() == 0) {
+      kin::solve_at(m, probe, driver, sample.input);
     } else {
       probe.qd = sample.qd;  // the sweep solved them: outputs need q, qd, qdd and dq only
       probe.qdd = sample.qdd;
+      if (loads && !sample.on_change_point) {  // the reactions need Phi_q factorised here (no Newton: solved)
+        kin::evaluate_constraints(m, probe, probe.t);
+        kin::factorize(m, probe);
+      }
     }
-    describe_position(mech, four_bar, probe, driver, sample.input, &sample.dq, p);
+    describe_position(mech, four_bar, probe, driver, sample.input, &sample.dq, p, sample.on_change_point);
     sink(p);
   };
   const Eigen::VectorXd drawn_q = data.q;

@@ -40,8 +40,10 @@ struct KinAnalysis {
 /// Fills `p` from a solved Data (q, qd, qdd set; factorised at q when `dq` is null or the model
 /// has loads), reusing p's storage. `four_bar`: the model's four-bar (kin::find_four_bar), for the
 /// transmission angle; `dq`: the input sensitivity when known (a sweep has it), else solved.
+/// `on_change_point`: the position is a change point the sweep crossed (Phi_q singular): the
+/// driving effort is then by virtual power along `dq` alone, the reactions are indeterminate.
 void describe_position(const mechanism::Mechanism& mech, const std::optional<kin::FourBar>& four_bar, kin::Data& data,
-                       int driver, double input, const Eigen::VectorXd* dq, KinPosition& p);
+                       int driver, double input, const Eigen::VectorXd* dq, KinPosition& p, bool on_change_point = false);
 
 /// Receives each position of a sweep as it is solved, in order; the position is reused for the
 /// next one (copy what must outlive the call).

@@ -132,9 +132,10 @@ void KinRows::coordinates_json(const Eigen::VectorXd& v, int order, io::JsonWrit
 
 void KinRows::forces_json(const KinPosition& p, io::JsonWriter& w) const {
   const kin::ForceAnalysis& f = *p.forces;
-  // A sense that locks by friction has no finite effort: null, and no "not finite" warning.
+  // A sense that locks by friction has no finite effort, nor has the Lagrange form at a change
+  // point (singular Phi_q, indeterminate multipliers): null, and no "not finite" warning.
   const auto effort = [&](double v) {
-    if (std::isfinite(v) || !f.friction) w.value(v);
+    if (std::isfinite(v) || (!f.friction && f.determinate)) w.value(v);
     else w.null();
   };
   w.key(effort_key_);

@@ -1,5 +1,8 @@
 #include <gearkit/kin/kinetostatics.hpp>
 
+#include <array>
+#include <span>
+
 #include <gearkit/kin/solve.hpp>
 
 #include <Eigen/LU>
@@ -25,12 +28,16 @@ void add_point_force(Eigen::VectorXd& Q, const Data& data, const BodyPoint& p, c
 
 double spring_tension(const Spring& s, double length) { return s.stiffness * (length - s.free_length) + s.preload; }
 
-// Constraint k's reaction at the state in `data` for the multipliers `lambda`.
-ConstraintReaction reaction_of(const Model& model, const Data& data, int k, const Eigen::VectorXd& lambda) {
+// Constraint k's reaction at the state in `data` for the multipliers `lambda`, into `r` (its
+// storage reused: a sweep computes the reactions of every position).
+void reaction_of(const Model& model, const Data& data, int k, const Eigen::VectorXd& lambda, ConstraintReaction& r) {
   const ModelConstraint& mc = model.constraints()[static_cast<std::size_t>(k)];
-  const std::vector<int> bodies = mc.constraint->bodies();
-  std::vector<BodyState> states(bodies.size());
+  const std::vector<int>& bodies = mc.bodies;
+  std::array<BodyState, 4> few;  // joints and most elements join two bodies: no allocation
+  std::vector<BodyState> many(bodies.size() > few.size() ? bodies.size() : 0);
+  const std::span<BodyState> states = many.empty() ? std::span<BodyState>(few.data(), bodies.size()) : std::span<BodyState>(many);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
+    states[i] = BodyState{};
     if (bodies[i] == kGround) continue;
     const int c = 3 * bodies[i];
     states[i].r = data.q.segment<2>(c);
@@ -38,7 +45,6 @@ ConstraintReaction reaction_of(const Model& model, const Data& data, int k, cons
     states[i].r_dot = data.qd.segment<2>(c);
     states[i].omega = data.qd(c + 2);
   }
-  ConstraintReaction r;
   r.constraint = k;
   r.name = mc.name;
   r.kind = mc.constraint->kind();
@@ -51,7 +57,6 @@ ConstraintReaction reaction_of(const Model& model, const Data& data, int k, cons
   r.at = reaction.at;
   r.pin = reaction.pin;
   r.values = std::move(reaction.values);
-  return r;
 }
 
 }  // namespace
@@ -237,11 +242,11 @@ std::vector<TwoForceMember> two_force_members(const Model& model, const ForceAna
   for (std::size_t k = 0; k < model.constraints().size(); ++k) {
     const ModelConstraint& mc = model.constraints()[k];
     if (mc.constraint->is_driver()) {
-      for (int b : mc.constraint->bodies()) other_constraints[b] += 1;
+      for (int b : mc.bodies) other_constraints[b] += 1;
     }
   }
   for (const ConstraintReaction& r : f.reactions) {
-    const std::vector<int> bodies = model.constraints()[static_cast<std::size_t>(r.constraint)].constraint->bodies();
+    const std::vector<int>& bodies = model.constraints()[static_cast<std::size_t>(r.constraint)].bodies;
     if (r.pin && r.at && bodies.size() == 2 && !with_friction.count(r.constraint)) {
       pin_ends[bodies[0]].push_back({*r.at, r.force});
       pin_ends[bodies[1]].push_back({*r.at, -r.force});
@@ -249,16 +254,17 @@ std::vector<TwoForceMember> two_force_members(const Model& model, const ForceAna
       for (int b : bodies) other_constraints[b] += 1;
     }
   }
-  // Loads per body, to know which bodies are unloaded.
-  std::map<int, bool> loaded;
+  // Loads per body (index body + 1: the ground is -1), to know which bodies are unloaded.
+  std::vector<char> loaded(model.bodies().size() + 1, 0);
+  const auto load = [&](int body) { loaded[static_cast<std::size_t>(body + 1)] = 1; };
   for (std::size_t i = 0; i < model.bodies().size(); ++i)
-    loaded[static_cast<int>(i)] = model.bodies()[i].mass > 0.0 || model.bodies()[i].inertia > 0.0;
-  for (const PointForce& pf : model.forces()) loaded[pf.at.body] = true;
-  for (const BodyTorque& t : model.torques()) loaded[t.body] = true;
-  for (const Spring& s : model.springs()) loaded[s.a.body] = loaded[s.b.body] = true;
+    if (model.bodies()[i].mass > 0.0 || model.bodies()[i].inertia > 0.0) load(static_cast<int>(i));
+  for (const PointForce& pf : model.forces()) load(pf.at.body);
+  for (const BodyTorque& t : model.torques()) load(t.body);
+  for (const Spring& s : model.springs()) load(s.a.body), load(s.b.body);
   std::vector<TwoForceMember> members;
   for (const auto& [body, ends] : pin_ends) {
-    if (body == kGround || ends.size() != 2 || loaded[body] || other_constraints[body] != 0) continue;
+    if (body == kGround || ends.size() != 2 || loaded[static_cast<std::size_t>(body + 1)] || other_constraints[body] != 0) continue;
     const Eigen::Vector2d axis = ends[0].first - ends[1].first;
     if (axis.norm() == 0.0) continue;
     // Force on the member at end A, projected on (A - B): positive pulls the ends apart.
@@ -281,11 +287,22 @@ void driver_efforts(const Model& model, Data& data, const Eigen::VectorXd& frict
 }  // namespace
 
 ForceAnalysis solve_forces(const Model& model, Data& data, int driver) {
+  ForceAnalysis f;
+  solve_forces(model, data, driver, f);
+  return f;
+}
+
+void solve_forces(const Model& model, Data& data, int driver, ForceAnalysis& f) {
   check_data(model, data);
   if (!data.factored) factorize(model, data);
   if (data.singular)
     throw std::runtime_error("kinetostatics at a singular configuration (dead point): the driving effort is unbounded");
-  ForceAnalysis f;
+  f.effort_lagrange.clear();
+  f.effort_virtual_power.clear();
+  f.two_force_members.clear();
+  f.unknown_loads.clear();
+  f.friction.reset();
+  f.warnings.clear();
   f.applied = applied_forces(model, data);
   const bool square = model.equations() == model.coordinates();
   f.determinate = square;
@@ -311,11 +328,15 @@ ForceAnalysis solve_forces(const Model& model, Data& data, int driver) {
   }
   data.lambda = f.lambda;
   driver_efforts(model, data, friction_forces, locked, f);
-  for (std::size_t k = 0; k < model.constraints().size(); ++k)
-    if (!model.constraints()[k].constraint->is_driver()) f.reactions.push_back(reaction_of(model, data, static_cast<int>(k), f.lambda));
+  std::size_t used = 0;
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    if (model.constraints()[k].constraint->is_driver()) continue;
+    if (used == f.reactions.size()) f.reactions.emplace_back();
+    reaction_of(model, data, static_cast<int>(k), f.lambda, f.reactions[used++]);
+  }
+  f.reactions.resize(used);
   if (f.friction && !locked) add_friction_to_reactions(*f.friction, model, data, f);
   f.two_force_members = two_force_members(model, f, with_friction);
-  return f;
 }
 
 namespace {
@@ -324,7 +345,7 @@ namespace {
 // frame origin: (Fx, Fy, M).
 std::vector<Eigen::Vector3d> constraint_forces(const Model& model, const Data& data, int k, const Eigen::VectorXd& lambda) {
   const ModelConstraint& mc = model.constraints()[static_cast<std::size_t>(k)];
-  const std::vector<int> bodies = mc.constraint->bodies();
+  const std::vector<int>& bodies = mc.bodies;
   std::vector<BodyState> states(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i] != kGround) {
@@ -356,7 +377,7 @@ void add_constraint_forces(const Model& model, const Data& data, const ForceAnal
   for (const ConstraintReaction& r : f.reactions) reactions[r.constraint] = &r;
   for (std::size_t k = 0; k < model.constraints().size(); ++k) {
     const ModelConstraint& mc = model.constraints()[k];
-    const std::vector<int> bodies = mc.constraint->bodies();
+    const std::vector<int>& bodies = mc.bodies;
     const auto r = reactions.find(static_cast<int>(k));
     const std::string kind = mc.constraint->is_driver() ? "driver" : mc.constraint->kind();
     if (r != reactions.end() && r->second->at && bodies.size() == 2) {

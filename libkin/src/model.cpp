@@ -29,7 +29,8 @@ int Model::add_constraint(std::string name, std::shared_ptr<const Constraint> co
   const int rows = constraint->equations();
   const bool driver = constraint->is_driver();
   constraint_by_name_.emplace(name, static_cast<int>(constraints_.size()));
-  constraints_.push_back({std::move(name), std::move(constraint), equations_});
+  std::vector<int> bodies = constraint->bodies();
+  constraints_.push_back({std::move(name), std::move(constraint), equations_, std::move(bodies)});
   equations_ += rows;
   const int index = static_cast<int>(constraints_.size()) - 1;
   if (driver) drivers_.push_back({index, DriverQuantity::angle, 0.0, std::nullopt});

@@ -24,6 +24,7 @@ struct Anchor {
   int determinant_sign = 0;
   double rcond = 1.0;            // of Phi_q there (Data::rcond)
   double rcond_scale = 0.0;      // the largest rcond on the branch so far
+  bool on_change_point = false;  // interpolated on one (interpolate())
   Eigen::VectorXd dq_predicted;  // scratch of advance(): the tangent the branch should have
 };
 
@@ -128,6 +129,7 @@ void interpolate(const Anchor& a, const Anchor& b, double input, Anchor& to) {
   hermite(a, b, input, to.q, to.dq);
   to.input = input;
   to.determinant_sign = 0;
+  to.on_change_point = true;
   const double t = (input - a.input) / (b.input - a.input);
   if (a.qd.size() == b.qd.size()) to.qd = (1 - t) * a.qd + t * b.qd;
   if (a.qdd.size() == b.qdd.size()) to.qdd = (1 - t) * a.qdd + t * b.qdd;
@@ -319,6 +321,7 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
     kept.qdd = s.qdd;
     kept.dq = s.dq;
     kept.iterations = s.iterations;
+    kept.on_change_point = s.on_change_point;
   });
   result.samples.resize(used);
 }
@@ -592,6 +595,7 @@ void visit_anchor(const Anchor& a, int iterations, bool velocities, SweepSample&
   scratch.q = a.q;
   scratch.dq = a.dq;
   scratch.iterations = iterations;
+  scratch.on_change_point = a.on_change_point;
   if (velocities) {
     scratch.qd = a.qd;
     scratch.qdd = a.qdd;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <map>
@@ -347,6 +348,39 @@ TEST(KinCommand, ATripleParallelogramPassesItsFlatPositions) {
   ASSERT_EQ(j["change_points"].size(), 1u);
   EXPECT_NEAR(j["change_points"][0]["input_deg"].get<double>(), 180.0, 1e-5);
   EXPECT_FALSE(j["change_points"][0]["bifurcation"].get<bool>());
+}
+
+// A weighted parallelogram driven at constant speed: the coupler translates on a circle (its
+// inertia force is radial and does no work), crank and rocker turn uniformly, so the driving
+// torque is the weights' alone, T = g a cos(theta2) (m_crank / 2 + m_coupler + m_rocker / 2)
+// (virtual work, centres of mass at mid-link). It holds through the change point at 180 deg,
+// where Phi_q is singular and the torque comes by virtual power along the branch followed.
+TEST(KinCommand, TheDrivingTorqueIsContinuousThroughAChangePoint) {
+  std::string yaml = four_bar_yaml({"parallelogram", "crank", "coupler", "rocker", 40, 100, 40, 100, 40, 0, 40});
+  const auto weigh = [&](const std::string& link, double kg, double half) {
+    const std::string from = "  " + link + ": {points:";
+    const auto at = yaml.find(from);
+    ASSERT_NE(at, std::string::npos);
+    const auto close = yaml.find(" deg}", at);
+    yaml.insert(close + 4, fmt::format(", mass: {} kg, centre_of_mass: [{}, 0], inertia: 1e-4 kg*m^2", kg, half));
+  };
+  weigh("crank", 0.1, 20);
+  weigh("coupler", 0.3, 50);
+  weigh("rocker", 0.2, 20);
+  yaml.replace(yaml.find("link: crank}"), 12, "link: crank, speed: 25 rad/s}");
+  yaml += "loads:\n  gravity: 9.81 m/s^2\n";
+  const auto j = run_json(shell_quote(write(scratch_dir("kin-weighted-parallelogram"), "p.yaml", yaml)) + " --sweep 170:190:2.5");
+  ASSERT_EQ(j["positions"].size(), 9u);
+  for (const auto& p : j["positions"]) {
+    const double theta2 = p["input_deg"].get<double>() * M_PI / 180;
+    const double expected = 9.81 * 0.040 * std::cos(theta2) * (0.1 / 2 + 0.3 + 0.2 / 2);
+    EXPECT_NEAR(p["driving_torque_Nm"].get<double>(), expected, 1e-9) << p["input_deg"];
+    if (std::abs(p["input_deg"].get<double>() - 180) > 1e-9)
+      EXPECT_NEAR(p["driving_torque_lagrange_Nm"].get<double>(), expected, 1e-9) << p["input_deg"];
+    else
+      EXPECT_TRUE(p["driving_torque_lagrange_Nm"].is_null() && p["reactions"].empty());
+  }
+  for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("non-finite"), std::string::npos) << w;
 }
 
 // The seed-004 pantograph's parallelogram O P R S lies flat where the coupler QP is square to

@@ -119,4 +119,8 @@ double kinetic_energy(const Model& model, const Data& data);
 /// @throws std::invalid_argument if the unknown loads are not as many as the given efforts.
 ForceAnalysis solve_forces(const Model& model, Data& data, int driver = 0);
 
+/// The same into `f`, whose storage (reactions, multipliers) is reused: a sweep analyses every
+/// position without allocating them again.
+void solve_forces(const Model& model, Data& data, int driver, ForceAnalysis& f);
+
 }  // namespace gearkit::kin

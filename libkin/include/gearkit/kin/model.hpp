@@ -37,6 +37,7 @@ struct ModelConstraint {
   std::string name;
   std::shared_ptr<const Constraint> constraint;
   int first_row = 0;
+  std::vector<int> bodies;  ///< constraint->bodies(), kept: analyses per position need them often
 };
 
 /// The coordinate a driver prescribes.

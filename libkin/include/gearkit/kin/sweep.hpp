@@ -31,6 +31,9 @@ struct SweepSample {
   Eigen::VectorXd q, qd, qdd;
   Eigen::VectorXd dq;  ///< input sensitivity dq/d(input) at the sample (velocity ratios)
   int iterations = 0;
+  /// The sample lies on a change point (interpolated, see sweep()): Phi_q is singular there, so
+  /// the reactions are statically indeterminate; dq is the tangent of the branch followed.
+  bool on_change_point = false;
 };
 
 /// A configuration where the driven coordinate cannot go on: the dependent Jacobian turns
