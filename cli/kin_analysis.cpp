@@ -224,8 +224,16 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   std::size_t done = 0;
   kin::SweepResult s;
   const bool loads = m.has_loads();
+  const bool plain_loads = loads && m.frictions().empty();
   const auto visit = [&](const kin::SweepSample& sample) {
     progress.update(done++);
+    if (plain_loads && sample.data && !sample.on_change_point) {
+      // The sweep's workspace is factorised here: the reactions solve with it (no second
+      // factorisation per position); nothing below refactorises or moves it.
+      describe_position(mech, four_bar, *sample.data, driver, sample.input, &sample.dq, p);
+      sink(p);
+      return;
+    }
     probe.q = sample.q;
     probe.inputs(driver) = sample.input;
     if (sample.qd.size() == 0) {

@@ -20,14 +20,16 @@ std::string key_with_unit(const kin::ReactionValue& v) {
 }  // namespace
 
 void write_reaction(io::JsonWriter& w, const kin::Model& model, const kin::ConstraintReaction& r) {
+  // Quoted once: a sweep writes these keys for every joint of every position.
+  static const io::JsonKey joint("joint"), kind("kind"), on("on"), force("force_N");
   w.begin_object();
-  w.key("joint");
+  w.key(joint);
   w.value(r.name);
-  w.key("kind");
+  w.key(kind);
   w.value(r.kind);
-  w.key("on");
+  w.key(on);
   w.value(model.body_name(r.body));
-  w.key("force_N");
+  w.key(force);
   w.begin_array();
   w.value(r.force.x());
   w.value(r.force.y());

@@ -142,11 +142,12 @@ void KinRows::forces_json(const KinPosition& p, io::JsonWriter& w) const {
   effort(f.effort_virtual_power[static_cast<std::size_t>(driver_)]);
   w.key(lagrange_key_);
   effort(f.effort_lagrange[static_cast<std::size_t>(driver_)]);
-  w.key("reactions");
+  static const io::JsonKey reactions("reactions"), members("two_force_members");
+  w.key(reactions);
   w.begin_array();
   for (const kin::ConstraintReaction& r : f.reactions) write_reaction(w, mech_.model, r);
   w.end_array();
-  w.key("two_force_members");
+  w.key(members);
   w.begin_array();
   for (const kin::TwoForceMember& tf : f.two_force_members) {
     w.begin_object();

@@ -347,6 +347,13 @@ class Continuation {
   /// interpolated on a change point the sweep crossed (the anchor is then just past it).
   const Anchor& current() const { return current_; }
 
+  /// The workspace holds the sample's factorisation and state (not after a change point or the
+  /// location of an extreme), with the sample's velocities.
+  bool factorised_at_sample() const {
+    return !interpolated_ && factorised_at_current_ && data_.factored && !data_.singular && options_.velocities &&
+           data_.q.size() == current_.q.size() && data_.qd.size() == current_.qd.size();
+  }
+
   /// The sweep starts on a change point (start_beside_change_point()): tells whether another
   /// branch passes there and, with options.switch_branch, takes it.
   ChangePoint start_on_change_point(const Anchor& start_sample) {
@@ -589,8 +596,11 @@ class Continuation {
   bool interpolated_ = false;
 };
 
-// Hands an anchor to the visitor through one reused sample (no allocation per position).
-void visit_anchor(const Anchor& a, int iterations, bool velocities, SweepSample& scratch, const SampleVisitor& visit) {
+// Hands an anchor to the visitor through one reused sample (no allocation per position);
+// `data`: the sweep's workspace if factorised at the anchor.
+void visit_anchor(const Anchor& a, int iterations, bool velocities, SweepSample& scratch, const SampleVisitor& visit,
+                  Data* data = nullptr) {
+  scratch.data = data;
   scratch.input = a.input;
   scratch.q = a.q;
   scratch.dq = a.dq;
@@ -651,7 +661,7 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
       if (last_visited != run.current().input) visit_anchor(run.current(), iterations, options.velocities, scratch, visit);
       break;
     }
-    visit_anchor(run.sample(), iterations, options.velocities, scratch, visit);
+    visit_anchor(run.sample(), iterations, options.velocities, scratch, visit, run.factorised_at_sample() ? &data : nullptr);
     last_visited = target;
   }
   result.complete = result.dead_points.empty();

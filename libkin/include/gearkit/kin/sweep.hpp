@@ -34,6 +34,12 @@ struct SweepSample {
   /// The sample lies on a change point (interpolated, see sweep()): Phi_q is singular there, so
   /// the reactions are statically indeterminate; dq is the tangent of the branch followed.
   bool on_change_point = false;
+  /// The sweep's own workspace when it is factorised at this sample (q, qd, qdd and the inputs
+  /// set, Phi_q factorised at q), else null (an interpolated sample, or one after an extreme was
+  /// located). A visitor may solve with that factorisation (kin::solve_forces, input_sensitivity)
+  /// to save a factorisation per position, but must not refactorise it or change q, qd or qdd:
+  /// the sweep's next step starts from it.
+  Data* data = nullptr;
 };
 
 /// A configuration where the driven coordinate cannot go on: the dependent Jacobian turns
