@@ -273,7 +273,7 @@ COMMANDS = {
         "--gcode-form": ["xy", "polar", "x"], "--feed": "num:mm/min"}},
     "kin": {"files": "mechanisms", "base": [], "options": {
         "--at": "num:deg", "--sweep": "range", "--driver": ["crank", "input", "x", "theta2"], "--outputs": ["x", "a,b"],
-        "--plot": "path", "--animate": "path", "--equations": "flag"}},
+        "--plot": "path", "--animate": "path", "--equations": "flag", "--branch": ["continue", "switch", "other", ""]}},
     "kin example": {"files": None, "base": ["--example"], "options": {"--equations": "flag", "--at": "num:deg"}},
     "dyn": {"files": "dynamics", "base": [], "options": {"--plot": "path", "--speed-plot": "path"}},
     "synth": {"files": "synthesis", "base": [], "task": SYNTH_TASKS, "options": {
