@@ -151,6 +151,15 @@ io::TextTable text_table(const io::Report& report, const std::string& title) {
   return {};
 }
 
+// The angle the sheet shows the cam at: the SVG turns the profile with the follower (follower_at),
+// so a sheet that said "cam angle 0" there misstated the picture; at 0 the profile layers are the
+// cutting position (the DXF's, always).
+std::string drawn_angle(double follower_at) {
+  const std::string angle = io::fixed(angle_deg(follower_at), 1);
+  if (std::abs(std::remainder(follower_at, 2 * kPi)) < 1e-12) return "cam angle 0.0° (profile layers as cut)";
+  return fmt::format("cam angle {}° (cam turned {}° from the cutting position)", angle, angle);
+}
+
 void title_block(io::Drawing& d, const CamModel& model, const io::Report& report, double x, double y_top, double h) {
   const gc::Follower& f = model.design.follower;
   const std::string follower = fmt::format(
@@ -161,7 +170,7 @@ void title_block(io::Drawing& d, const CamModel& model, const io::Report& report
   t.rows = {{"drawing", report.title},
             {"follower", follower},
             {"units", "lengths mm, angles deg"},
-            {"frame", "cam at cam angle 0 (profile layers as cut)"},
+            {"cam angle drawn", drawn_angle(model.follower_at)},
             {"made by", fmt::format("gearkit {}", io::version())}};
   io::add_table(d, t, x, y_top, h, "title_block", "frame");
 }

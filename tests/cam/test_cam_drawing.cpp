@@ -96,6 +96,16 @@ TEST(CamDrawing, TablesLegendAndDimensionsCarryTheModelAndTheReport) {
   EXPECT_NE(r.svg.find("R_b = 40.000 (base)"), std::string::npos);
 }
 
+TEST(CamDrawing, TitleBlockStatesTheCamAngleDrawn) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  // The DXF is at cam angle 0 (profile as cut); the SVG at the file's follower_at: 60 deg
+  // (examples/cams/translating_roller_cycloidal.yaml), the cam turned with it.
+  const CamRun r = run("translating_roller_cycloidal.yaml");
+  EXPECT_TRUE(has(r.dxf["texts"]["title_block"], "cam angle 0.0° (profile layers as cut)"));
+  EXPECT_NE(r.svg.find("cam angle 60.0° (cam turned 60.0° from the cutting position)"), std::string::npos);
+  EXPECT_EQ(r.svg.find("cam angle 0.0° (profile layers as cut)"), std::string::npos);
+}
+
 TEST(CamDrawing, ZeroMarkPointsAtTheFollowerAtCamAngleZero) {
   if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
   // Translating follower on the axis x = 0, above the cam: the zero mark runs from the centre
