@@ -214,6 +214,8 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
       probe.qdd = sample.qdd;
     }
     describe_position(mech, four_bar, probe, driver, sample.input, &sample.dq, p);
+    // kin::sweep records a dead point before it visits the position there.
+    p.at_dead_point = !s.dead_points.empty() && s.dead_points.back().input == sample.input;
     sink(p);
   };
   const Eigen::VectorXd drawn_q = data.q;
