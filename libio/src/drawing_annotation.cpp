@@ -161,25 +161,8 @@ bool overlaps(const Box& a, const Box& b) { return a.xmin < b.xmax && b.xmin < a
 
 namespace {
 
-bool inside(const Box& b, double x, double y) { return x > b.xmin && x < b.xmax && y > b.ymin && y < b.ymax; }
-
-// Liang-Barsky: the part of the segment within the box's slab in each axis must be non-empty.
 bool segment_crosses(const Box& b, double x1, double y1, double x2, double y2) {
-  if (inside(b, x1, y1) || inside(b, x2, y2)) return true;
-  double t0 = 0.0, t1 = 1.0;
-  const double dx = x2 - x1, dy = y2 - y1;
-  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {x1 - b.xmin, b.xmax - x1, y1 - b.ymin, b.ymax - y1};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0.0) {
-      if (q[i] <= 0.0) return false;  // parallel to this edge and outside (or on) it
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0.0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
-    if (t0 >= t1) return false;
-  }
-  return true;
+  return segment_meets_box(b.xmin, b.ymin, b.xmax, b.ymax, x1, y1, x2, y2);
 }
 
 bool arc_crosses(const Box& b, const Arc& a) {
