@@ -105,14 +105,16 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
   const AnimationCanvas canvas = canvas_of(m, frames, w, h);
   const double stroke = canvas.stroke;
   std::string loop_text;
-  const double duration = loop_seconds(analysis, input_speed, frames.size(), loop_text);
+  const double duration =
+      loop_seconds(analysis, input_speed, mech.drivers.at(static_cast<std::size_t>(analysis.driver)).speed, frames.size(), loop_text);
 
   std::string svg = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.3f} {:.3f}\" width=\"800\" height=\"{:.0f}\">\n"
       "<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       w, h, 800.0 * h / w, io::xml_escape(mech.title), io::xml_escape(loop_text));
-  svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration);
+  svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration) +
+         spring_elements(m, frames, canvas, duration);
   for (const auto& [name, p] : m.ground().points) {
     const double s = 3 * stroke, x = canvas.X(p.x()), y = canvas.Y(p.y());
     svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",

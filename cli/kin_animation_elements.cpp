@@ -41,14 +41,25 @@ std::optional<double> animation_speed(const io::po::variables_map& vm, const mec
   return v;
 }
 
-double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::size_t frames, std::string& text) {
+// The captions stay under about 70 characters: the animation's width holds no more at its size.
+double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::optional<double> file_speed,
+                    std::size_t frames, std::string& text) {
   const double span = analysis.positions.empty() ? 0.0 : std::abs(analysis.positions.back().input - analysis.positions.front().input);
   if (speed && *speed > 0 && span > 0) {
-    text = fmt::format("one loop = the sweep at the input speed (--speed): {:.3g} s", span / *speed);
+    text = fmt::format("one loop {:.3g} s: the sweep at --speed", span / *speed);
     return span / *speed;
   }
+  if (file_speed && std::abs(*file_speed) > 0 && span > 0) {
+    const double real = span / std::abs(*file_speed);
+    double slower = 1.0;
+    while (real * slower < 0.5) slower *= 10.0;
+    text = slower == 1.0 ? fmt::format("one loop {:.3g} s: the sweep at the speed in the file", real)
+                         : fmt::format("one loop {:.3g} s: the speed in the file, {:g}x slower (real {:.3g} s)", real * slower,
+                                       slower, real);
+    return real * slower;
+  }
   const double seconds = std::max(2.0, 0.04 * static_cast<double>(frames));
-  text = fmt::format("one loop {:.3g} s (no --speed: 25 frames per second, at least 2 s)", seconds);
+  text = fmt::format("one loop {:.3g} s: no speed given, 25 frames per second", seconds);
   return seconds;
 }
 
@@ -85,6 +96,43 @@ std::string slider_elements(const kin::Model& model, const std::vector<const Kin
                        guide.front(), 0.6 * c.stroke, 3 * c.stroke, 1.5 * c.stroke, animate("d", guide, duration));
     svg += fmt::format("<polygon points=\"{}\" fill=\"#ddd\" stroke=\"#333\" stroke-width=\"{:.3f}\"><title>slider</title>{}</polygon>\n",
                        slider.front(), 0.6 * c.stroke, animate("points", slider, duration));
+  }
+  return svg;
+}
+
+namespace {
+
+// A spring from a to b as SVG points: straight ends of 15 % each and a zigzag of 8 coils between,
+// `width` wide (SVG units), so that it reads as a spring at any length.
+std::string zigzag(const AnimationCanvas& c, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double width) {
+  const Eigen::Vector2d A(c.X(a.x()), c.Y(a.y())), B(c.X(b.x()), c.Y(b.y())), d = B - A;
+  const double length = d.norm();
+  if (!(length > 0)) return fmt::format("{:.3f},{:.3f} {:.3f},{:.3f}", A.x(), A.y(), B.x(), B.y());
+  const Eigen::Vector2d u = d / length, n(-u.y(), u.x());
+  constexpr int kCorners = 16;  // two per coil
+  std::string pts = fmt::format("{:.3f},{:.3f} ", A.x(), A.y());
+  for (int k = 0; k <= kCorners + 1; ++k) {
+    const double t = 0.15 + 0.7 * static_cast<double>(k) / (kCorners + 1);
+    const double side = k == 0 || k == kCorners + 1 ? 0.0 : (k % 2 ? 0.5 : -0.5);
+    const Eigen::Vector2d p = A + t * d + side * width * n;
+    pts += fmt::format("{:.3f},{:.3f} ", p.x(), p.y());
+  }
+  return pts + fmt::format("{:.3f},{:.3f}", B.x(), B.y());
+}
+
+}  // namespace
+
+std::string spring_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                            double duration) {
+  std::string svg;
+  for (const kin::Spring& s : model.springs()) {
+    if (frames.empty()) continue;
+    std::vector<std::string> values;
+    for (const KinPosition* f : frames)
+      values.push_back(zigzag(c, at(f->q, s.a.body, s.a.local), at(f->q, s.b.body, s.b.local), 4.0 * c.stroke));
+    svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"#2a7f2a\" stroke-width=\"{:.3f}\" "
+                       "stroke-linejoin=\"round\"><title>spring {}</title>{}</polyline>\n",
+                       values.front(), 0.6 * c.stroke, io::xml_escape(s.name), animate("points", values, duration));
   }
   return svg;
 }
