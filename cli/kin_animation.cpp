@@ -44,6 +44,12 @@ AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPositi
   for (const KinPosition* f : frames)
     for (std::size_t b = 0; b < m.bodies().size(); ++b)
       for (const auto& [name, local] : m.bodies()[b].points) grow(point_at(f->q, static_cast<int>(b), local));
+  for (const GearCircle& g : gear_circles(m, frames))  // pitch circles reach beyond the links' points
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d o = point_at(f->q, g.axis.body, g.axis.local);
+      grow(o - Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
+      grow(o + Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
+    }
   if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
   const double span = std::max({x1 - x0, y1 - y0, 1e-3});
   const double margin = 0.14 * span;
@@ -114,7 +120,7 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
       "<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       w, h, 800.0 * h / w, io::xml_escape(mech.title), io::xml_escape(loop_text));
   svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration) +
-         spring_elements(m, frames, canvas, duration);
+         spring_elements(m, frames, canvas, duration) + gear_elements(m, frames, canvas, duration);
   for (const auto& [name, p] : m.ground().points) {
     const double s = 3 * stroke, x = canvas.X(p.x()), y = canvas.Y(p.y());
     svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",

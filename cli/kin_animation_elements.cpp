@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 namespace gearkit::cli {
 
@@ -134,6 +136,87 @@ std::string spring_elements(const kin::Model& model, const std::vector<const Kin
                        "stroke-linejoin=\"round\"><title>spring {}</title>{}</polyline>\n",
                        values.front(), 0.6 * c.stroke, io::xml_escape(s.name), animate("points", values, duration));
   }
+  return svg;
+}
+
+namespace {
+
+// The point of `body` that a revolute joint pins to `carrier`: the gear's axis.
+std::optional<kin::BodyPoint> axis_of(const kin::Model& model, int body, int carrier) {
+  for (const auto& mc : model.constraints()) {
+    const auto* r = dynamic_cast<const kin::Revolute*>(mc.constraint.get());
+    if (!r) continue;
+    if (r->a().body == body && r->b().body == carrier) return r->a();
+    if (r->b().body == body && r->a().body == carrier) return r->b();
+  }
+  return std::nullopt;
+}
+
+// k of a gear mesh's relation (theta_2 - theta_c) + k (theta_1 - theta_c) = const, by least
+// squares over the frames' steps: the element's tooth counts are the plugin's, not the solver's,
+// and k = z1/z2 (external, the gears turn opposite) or -z1/z2 (internal) is what the motion shows.
+std::optional<double> mesh_factor(const std::vector<const KinPosition*>& frames, int g1, int g2, int carrier) {
+  double s12 = 0.0, s11 = 0.0;
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    auto step = [&](int b) {
+      return std::remainder(angle_of(frames[i]->q, b) - angle_of(frames[i - 1]->q, b) - angle_of(frames[i]->q, carrier) +
+                                angle_of(frames[i - 1]->q, carrier),
+                            2.0 * std::numbers::pi);
+    };
+    const double d1 = step(g1), d2 = step(g2);
+    s12 += d1 * d2, s11 += d1 * d1;
+  }
+  if (!(s11 > 1e-12)) return std::nullopt;  // the gears did not turn: nothing tells their sizes
+  return -s12 / s11;
+}
+
+// One gear: its pitch circle (dashed) about its moving axis and a tooth mark, a radial tick on the
+// circle at the gear's angle, so that its turning shows.
+std::string gear_svg(const std::vector<const KinPosition*>& frames, const AnimationCanvas& c, const kin::BodyPoint& axis,
+                     double r, double duration, const std::string& name) {
+  std::vector<std::string> cx, cy, mark;
+  for (const KinPosition* f : frames) {
+    const Eigen::Vector2d o = at(f->q, axis.body, axis.local);
+    const double a = angle_of(f->q, axis.body);
+    const Eigen::Vector2d p = o + 0.85 * r * Eigen::Vector2d(std::cos(a), std::sin(a)), q = o + 1.12 * r * Eigen::Vector2d(std::cos(a), std::sin(a));
+    cx.push_back(fmt::format("{:.3f}", c.X(o.x())));
+    cy.push_back(fmt::format("{:.3f}", c.Y(o.y())));
+    mark.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(p.x()), c.Y(p.y()), c.X(q.x()), c.Y(q.y())));
+  }
+  return fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"none\" stroke=\"#b06000\" stroke-width=\"{:.3f}\" "
+                     "stroke-dasharray=\"{:.3f} {:.3f}\"><title>pitch circle {}</title>{}{}</circle>\n"
+                     "<path d=\"{}\" stroke=\"#b06000\" stroke-width=\"{:.3f}\"><title>tooth mark {}</title>{}</path>\n",
+                     cx.front(), cy.front(), r * c.scale, 0.6 * c.stroke, 3 * c.stroke, 1.5 * c.stroke, io::xml_escape(name),
+                     animate("cx", cx, duration), animate("cy", cy, duration), mark.front(), c.stroke, io::xml_escape(name),
+                     animate("d", mark, duration));
+}
+
+}  // namespace
+
+std::vector<GearCircle> gear_circles(const kin::Model& model, const std::vector<const KinPosition*>& frames) {
+  std::vector<GearCircle> out;
+  for (const auto& mc : model.constraints()) {
+    if (mc.constraint->kind() != "gear_mesh" || frames.size() < 2) continue;
+    const std::vector<int> b = mc.constraint->bodies();  // gear 2, gear 1, carrier (the gear_mesh element's order)
+    if (b.size() != 3) continue;
+    const std::optional<kin::BodyPoint> a2 = axis_of(model, b[0], b[2]), a1 = axis_of(model, b[1], b[2]);
+    const std::optional<double> k = mesh_factor(frames, b[1], b[0], b[2]);
+    if (!a1 || !a2 || !k || !(1.0 + *k > 1e-9)) continue;
+    const Eigen::VectorXd& q = frames.front()->q;
+    const double a = (at(q, a1->body, a1->local) - at(q, a2->body, a2->local)).norm();
+    // External: r1 + r2 = a, r1 = k r2; internal (k < 0, gear 2 the ring): r2 - r1 = a, r1 = -k r2.
+    // Both give r2 = a / (1 + k).
+    const double r2 = a / (1.0 + *k), r1 = std::abs(*k) * r2;
+    out.push_back({*a1, r1, model.bodies()[static_cast<std::size_t>(b[1])].name});
+    out.push_back({*a2, r2, model.bodies()[static_cast<std::size_t>(b[0])].name});
+  }
+  return out;
+}
+
+std::string gear_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                          double duration) {
+  std::string svg;
+  for (const GearCircle& g : gear_circles(model, frames)) svg += gear_svg(frames, c, g.axis, g.r, duration, g.name);
   return svg;
 }
 

@@ -35,6 +35,22 @@ std::optional<double> animation_speed(const io::po::variables_map& vm, const mec
 std::string slider_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                             double duration);
 
+/// A gear of a gear_mesh element: its axis (the point a revolute pins to the carrier) and pitch
+/// radius [m], from the centre distance and the ratio the frames show (r2 = a / (1 + k) for the
+/// mesh relation (theta_2 - theta_c) + k (theta_1 - theta_c) = const). None when the gears do not
+/// turn in the frames.
+struct GearCircle {
+  kin::BodyPoint axis;
+  double r = 0.0;
+  std::string name;
+};
+std::vector<GearCircle> gear_circles(const kin::Model& model, const std::vector<const KinPosition*>& frames);
+
+/// The pitch circles of the model's gear meshes about their moving axes, each with a tooth mark
+/// turning with its gear; sizes from the centre distance and the ratio the frames show.
+std::string gear_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                          double duration);
+
 /// The model's springs as zigzags between their two points, stretching with the motion.
 std::string spring_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                             double duration);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -129,4 +130,44 @@ TEST(KinAnimation, SpringStretchesBetweenItsPoints) {
     EXPECT_NEAR(std::hypot(pts.back().first - p.first, pts.back().second - p.second), std::hypot(50.0, 100.0), 1e-2) << n;
   }
   EXPECT_EQ(n, 13);  // 0, 30, ..., 360 deg
+}
+
+namespace {
+
+// The direction (rad, y up) of each frame's tooth mark "Mx,y Lx,y" of the gear named `name`.
+std::vector<double> mark_angles(const std::string& svg, const std::string& name) {
+  const std::size_t title = svg.find("<title>tooth mark " + name + "</title>");
+  EXPECT_NE(title, std::string::npos) << name;
+  std::vector<double> out;
+  if (title == std::string::npos) return out;
+  const std::size_t values = svg.find("values=\"", title) + 8;
+  std::istringstream frames(svg.substr(values, svg.find('"', values) - values));
+  for (std::string f; std::getline(frames, f, ';');) {
+    double mx = 0, my = 0, lx = 0, ly = 0;
+    EXPECT_EQ(std::sscanf(f.c_str(), "M%lf,%lf L%lf,%lf", &mx, &my, &lx, &ly), 4) << f;
+    out.push_back(std::atan2(-(ly - my), lx - mx));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(KinAnimation, GearsArePitchCirclesTurningAtTheRatio) {
+  // geared_five_bar.yaml: module 5 mm, z1 = 20, z2 = 40 (the file), so pitch radii m z / 2 = 50 and
+  // 100 mm (the SVG's units are mm); the tooth marks turn with the gears, gear 2 at -z1/z2 = -1/2
+  // of gear 1 (external mesh: opposite senses).
+  const std::string svg = animate("geared_five_bar.yaml", "");
+  EXPECT_NE(svg.find("r=\"50.000\" fill=\"none\" stroke=\"#b06000\""), std::string::npos);
+  EXPECT_NE(svg.find("r=\"100.000\" fill=\"none\" stroke=\"#b06000\""), std::string::npos);
+  EXPECT_NE(svg.find("<title>pitch circle gear1</title>"), std::string::npos);
+  const std::vector<double> a1 = mark_angles(svg, "gear1"), a2 = mark_angles(svg, "gear2");
+  ASSERT_EQ(a1.size(), a2.size());
+  ASSERT_GT(a1.size(), 10u);
+  double turned1 = 0, turned2 = 0;
+  for (std::size_t i = 1; i < a1.size(); ++i) {
+    turned1 += std::remainder(a1[i] - a1[i - 1], 2 * M_PI);
+    turned2 += std::remainder(a2[i] - a2[i - 1], 2 * M_PI);
+  }
+  EXPECT_NEAR(turned1, 2 * M_PI, 1e-3);  // the sweep: 90 to 450 deg
+  EXPECT_NEAR(turned2 / turned1, -0.5, 1e-6);
 }
