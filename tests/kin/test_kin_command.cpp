@@ -188,22 +188,13 @@ TEST(KinCommand, DeadPointInASweepIsAWarning) {
 // torque grow without bound; the value at the located dead point (about 1e15 N m) is no torque.
 TEST(KinCommand, DeadPointTorqueIsAGapInThePlotNotASpike) {
   const auto dir = scratch_dir("kin-dead-torque");
-  const std::string file = write(dir, "rocker_driven.yaml", R"(mechanism: rocker-driven four-bar
-ground: {O2: [0, 0], O4: [100, 0]}
-links:
-  crank: {points: {O2: [0, 0], A: [40, 0]}, angle: 40 deg, mass: 0.1 kg, centre_of_mass: [20, 0], inertia: 2e-5 kg*m^2}
-  coupler: {points: {A: [0, 0], B: [120, 0]}, angle: 20 deg, mass: 0.3 kg, centre_of_mass: [60, 10], inertia: 4e-4 kg*m^2}
-  rocker: {points: {O4: [0, 0], B: [80, 0]}, angle: 75 deg, mass: 0.2 kg, centre_of_mass: [40, 0], inertia: 1.2e-4 kg*m^2}
-joints:
-  - {name: O2, type: revolute, at: [crank.O2, ground.O2]}
-  - {name: A, type: revolute, at: [crank.A, coupler.A]}
-  - {name: B, type: revolute, at: [coupler.B, rocker.B]}
-  - {name: O4, type: revolute, at: [rocker.O4, ground.O4]}
-drivers:
-  - {name: theta4d, type: angle, link: rocker, speed: 5 rad/s, range: [60 deg, 130 deg, 1 deg]}
-loads:
-  gravity: 9.81 m/s^2
-)");
+  // examples/mechanisms/four_bar.yaml (masses, gravity) with the rocker as the driver.
+  std::string text = slurp(kExamples + "four_bar.yaml");
+  const std::string crank_driver = "  - {name: theta2, type: angle, link: crank, speed: 25 rad/s, range: [0 deg, 360 deg, 2 deg]}";
+  ASSERT_NE(text.find(crank_driver), std::string::npos);
+  text.replace(text.find(crank_driver), crank_driver.size(),
+               "  - {name: theta4d, type: angle, link: rocker, speed: 5 rad/s, range: [60 deg, 130 deg, 1 deg]}");
+  const std::string file = write(dir, "rocker_driven.yaml", text);
   const std::string plot = (dir / "plot.svg").string();
   const auto j = run_json(shell_quote(file) + " --plot " + shell_quote(plot));
   ASSERT_EQ(j["dead_points"].size(), 1u);
