@@ -51,6 +51,19 @@ AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPositi
       grow(o + Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
     }
   if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
+  // A link's name starts at the middle of its points and runs right (name_labels: bold, 5.4
+  // strokes high, a stroke = span / 150; about 0.72 of its height a character): a slider's name
+  // at the far end ran off the picture, past the margin.
+  const double stroke_m = std::max({x1 - x0, y1 - y0, 1e-3}) / 150.0;
+  for (const KinPosition* f : frames)
+    for (std::size_t b = 0; b < m.bodies().size(); ++b) {
+      const kin::Body& body = m.bodies()[b];
+      if (body.points.empty()) continue;
+      Eigen::Vector2d mid = Eigen::Vector2d::Zero();
+      for (const auto& [name, local] : body.points) mid += point_at(f->q, static_cast<int>(b), local);
+      mid /= static_cast<double>(body.points.size());
+      x1 = std::max(x1, mid.x() + stroke_m * (1.0 + 0.72 * 5.4 * static_cast<double>(body.name.size())) - 0.14 * 150.0 * stroke_m);
+    }
   const double span = std::max({x1 - x0, y1 - y0, 1e-3});
   const double margin = 0.14 * span;
   const double scale = 1000.0;  // m -> mm in the drawing's units

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -170,4 +171,22 @@ TEST(KinAnimation, GearsArePitchCirclesTurningAtTheRatio) {
   }
   EXPECT_NEAR(turned1, 2 * M_PI, 1e-3);  // the sweep: 90 to 450 deg
   EXPECT_NEAR(turned2 / turned1, -0.5, 1e-6);
+}
+
+TEST(KinAnimation, LinkNamesStayInsideThePicture) {
+  // slider_crank.yaml: the piston's name starts at its pin B, the right end of the mechanism; in
+  // every frame its text (6 bold characters, about 0.68 of the font size each in a sans-serif)
+  // ends inside the viewBox. It ran past the right edge.
+  const std::string svg = animate("slider_crank.yaml", "--sweep 0:360:5");
+  double w = 0, h = 0;
+  ASSERT_EQ(std::sscanf(svg.c_str() + svg.find("viewBox=\"") + 9, "0 0 %lf %lf", &w, &h), 2);
+  const std::size_t label = svg.find("font-weight=\"bold\">piston<animate attributeName=\"x\"");
+  ASSERT_NE(label, std::string::npos);
+  const std::size_t size_at = svg.rfind("font-size=\"", label) + 11;
+  const double size = std::stod(svg.substr(size_at));
+  const std::size_t values = svg.find("values=\"", label) + 8;
+  std::istringstream xs(svg.substr(values, svg.find('"', values) - values));
+  double right = 0;
+  for (std::string x; std::getline(xs, x, ';');) right = std::max(right, std::stod(x) + 0.68 * size * 6);
+  EXPECT_LE(right, w);
 }
