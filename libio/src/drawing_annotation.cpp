@@ -213,9 +213,12 @@ bool own_leader(const Text& t, const Line& l) {
 
 }  // namespace
 
-bool crossed_by_curves(const Drawing& d, const Box& b) {
+namespace {
+
+// crossed_by_curves, leaving out the leader lines of the text `own` (when given).
+bool crossed_except_leader(const Drawing& d, const Box& b, const Text* own) {
   for (const Line& l : d.lines)
-    if (segment_crosses(b, l.x1, l.y1, l.x2, l.y2)) return true;
+    if (!(own && own_leader(*own, l)) && segment_crosses(b, l.x1, l.y1, l.x2, l.y2)) return true;
   for (const Polyline& p : d.polylines)
     if (polyline_crosses(b, p)) return true;
   for (const Circle& c : d.circles)
@@ -225,16 +228,16 @@ bool crossed_by_curves(const Drawing& d, const Box& b) {
   return false;
 }
 
+}  // namespace
+
+bool crossed_by_curves(const Drawing& d, const Box& b) { return crossed_except_leader(d, b, nullptr); }
+
 bool fits(const Drawing& d, const Drawing& added) {
   for (const Text& t : added.texts) {
     const Box b = text_box(t);
-    if (crossed_by_curves(d, b)) return false;
+    if (crossed_by_curves(d, b) || crossed_except_leader(added, b, &t)) return false;
     for (const Text& o : d.texts)
       if (overlaps(b, text_box(o))) return false;
-    Drawing own = added;
-    own.texts.clear();
-    std::erase_if(own.lines, [&](const Line& l) { return own_leader(t, l); });
-    if (crossed_by_curves(own, b)) return false;
   }
   for (const Line& l : added.lines)
     for (const Text& o : d.texts)
@@ -272,12 +275,8 @@ std::vector<std::pair<std::size_t, std::size_t>> overlapping_texts(const Drawing
 
 std::vector<std::size_t> texts_crossed_by_curves(const Drawing& d) {
   std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < d.texts.size(); ++i) {
-    Drawing others = d;
-    others.texts.clear();
-    std::erase_if(others.lines, [&](const Line& l) { return own_leader(d.texts[i], l); });
-    if (crossed_by_curves(others, text_box(d.texts[i]))) out.push_back(i);
-  }
+  for (std::size_t i = 0; i < d.texts.size(); ++i)
+    if (crossed_except_leader(d, text_box(d.texts[i]), &d.texts[i])) out.push_back(i);
   return out;
 }
 
