@@ -231,6 +231,7 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
       // The sweep's workspace is factorised here: the reactions solve with it (no second
       // factorisation per position); nothing below refactorises or moves it.
       describe_position(mech, four_bar, *sample.data, driver, sample.input, &sample.dq, p);
+      p.at_dead_point = false;  // a sample with the sweep's factorisation is a regular one
       sink(p);
       return;
     }
@@ -247,6 +248,8 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
       }
     }
     describe_position(mech, four_bar, probe, driver, sample.input, &sample.dq, p, sample.on_change_point);
+    // kin::sweep records a dead point before it visits the position there.
+    p.at_dead_point = !s.dead_points.empty() && s.dead_points.back().input == sample.input;
     sink(p);
   };
   const Eigen::VectorXd drawn_q = data.q;

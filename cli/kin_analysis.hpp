@@ -20,6 +20,11 @@ struct KinPosition {
   std::vector<double> output_ratios;       ///< d(output)/d(input)
   std::optional<double> transmission_angle;  ///< [rad], four-bars only
   std::optional<kin::ForceAnalysis> forces;  ///< when the model has loads
+  /// The sweep's last position, where it stopped at a dead point: the driver cannot move the
+  /// mechanism there, so the effort (and the velocities) grow without bound as it is approached
+  /// and the value computed at the located input (about 1e15 N m) means nothing. Tables and JSON
+  /// keep the row (docs/kin.md); the plot leaves it out.
+  bool at_dead_point = false;
 };
 
 /// What an analysis keeps. A sweep streams its positions (PositionSink) and keeps none here;

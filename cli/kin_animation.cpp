@@ -44,7 +44,26 @@ AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPositi
   for (const KinPosition* f : frames)
     for (std::size_t b = 0; b < m.bodies().size(); ++b)
       for (const auto& [name, local] : m.bodies()[b].points) grow(point_at(f->q, static_cast<int>(b), local));
+  for (const GearCircle& g : gear_circles(m, frames))  // pitch circles reach beyond the links' points
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d o = point_at(f->q, g.axis.body, g.axis.local);
+      grow(o - Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
+      grow(o + Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
+    }
   if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
+  // A link's name starts at the middle of its points and runs right (name_labels: bold, 5.4
+  // strokes high, a stroke = span / 150; about 0.72 of its height a character): a slider's name
+  // at the far end ran off the picture, past the margin.
+  const double stroke_m = std::max({x1 - x0, y1 - y0, 1e-3}) / 150.0;
+  for (const KinPosition* f : frames)
+    for (std::size_t b = 0; b < m.bodies().size(); ++b) {
+      const kin::Body& body = m.bodies()[b];
+      if (body.points.empty()) continue;
+      Eigen::Vector2d mid = Eigen::Vector2d::Zero();
+      for (const auto& [name, local] : body.points) mid += point_at(f->q, static_cast<int>(b), local);
+      mid /= static_cast<double>(body.points.size());
+      x1 = std::max(x1, mid.x() + stroke_m * (1.0 + 0.72 * 5.4 * static_cast<double>(body.name.size())) - 0.14 * 150.0 * stroke_m);
+    }
   const double span = std::max({x1 - x0, y1 - y0, 1e-3});
   const double margin = 0.14 * span;
   const double scale = 1000.0;  // m -> mm in the drawing's units
@@ -105,14 +124,16 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
   const AnimationCanvas canvas = canvas_of(m, frames, w, h);
   const double stroke = canvas.stroke;
   std::string loop_text;
-  const double duration = loop_seconds(analysis, input_speed, frames.size(), loop_text);
+  const double duration =
+      loop_seconds(analysis, input_speed, mech.drivers.at(static_cast<std::size_t>(analysis.driver)).speed, frames.size(), loop_text);
 
   std::string svg = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {:.3f} {:.3f}\" width=\"800\" height=\"{:.0f}\">\n"
       "<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       w, h, 800.0 * h / w, io::xml_escape(mech.title), io::xml_escape(loop_text));
-  svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration);
+  svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration) +
+         spring_elements(m, frames, canvas, duration) + gear_elements(m, frames, canvas, duration);
   for (const auto& [name, p] : m.ground().points) {
     const double s = 3 * stroke, x = canvas.X(p.x()), y = canvas.Y(p.y());
     svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",

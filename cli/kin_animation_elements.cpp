@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 namespace gearkit::cli {
 
@@ -41,14 +43,25 @@ std::optional<double> animation_speed(const io::po::variables_map& vm, const mec
   return v;
 }
 
-double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::size_t frames, std::string& text) {
+// The captions stay under about 70 characters: the animation's width holds no more at its size.
+double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::optional<double> file_speed,
+                    std::size_t frames, std::string& text) {
   const double span = analysis.positions.empty() ? 0.0 : std::abs(analysis.positions.back().input - analysis.positions.front().input);
   if (speed && *speed > 0 && span > 0) {
-    text = fmt::format("one loop = the sweep at the input speed (--speed): {:.3g} s", span / *speed);
+    text = fmt::format("one loop {:.3g} s: the sweep at --speed", span / *speed);
     return span / *speed;
   }
+  if (file_speed && std::abs(*file_speed) > 0 && span > 0) {
+    const double real = span / std::abs(*file_speed);
+    double slower = 1.0;
+    while (real * slower < 0.5) slower *= 10.0;
+    text = slower == 1.0 ? fmt::format("one loop {:.3g} s: the sweep at the speed in the file", real)
+                         : fmt::format("one loop {:.3g} s: the speed in the file, {:g}x slower (real {:.3g} s)", real * slower,
+                                       slower, real);
+    return real * slower;
+  }
   const double seconds = std::max(2.0, 0.04 * static_cast<double>(frames));
-  text = fmt::format("one loop {:.3g} s (no --speed: 25 frames per second, at least 2 s)", seconds);
+  text = fmt::format("one loop {:.3g} s: no speed given, 25 frames per second", seconds);
   return seconds;
 }
 
@@ -86,6 +99,124 @@ std::string slider_elements(const kin::Model& model, const std::vector<const Kin
     svg += fmt::format("<polygon points=\"{}\" fill=\"#ddd\" stroke=\"#333\" stroke-width=\"{:.3f}\"><title>slider</title>{}</polygon>\n",
                        slider.front(), 0.6 * c.stroke, animate("points", slider, duration));
   }
+  return svg;
+}
+
+namespace {
+
+// A spring from a to b as SVG points: straight ends of 15 % each and a zigzag of 8 coils between,
+// `width` wide (SVG units), so that it reads as a spring at any length.
+std::string zigzag(const AnimationCanvas& c, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double width) {
+  const Eigen::Vector2d A(c.X(a.x()), c.Y(a.y())), B(c.X(b.x()), c.Y(b.y())), d = B - A;
+  const double length = d.norm();
+  if (!(length > 0)) return fmt::format("{:.3f},{:.3f} {:.3f},{:.3f}", A.x(), A.y(), B.x(), B.y());
+  const Eigen::Vector2d u = d / length, n(-u.y(), u.x());
+  constexpr int kCorners = 16;  // two per coil
+  std::string pts = fmt::format("{:.3f},{:.3f} ", A.x(), A.y());
+  for (int k = 0; k <= kCorners + 1; ++k) {
+    const double t = 0.15 + 0.7 * static_cast<double>(k) / (kCorners + 1);
+    const double side = k == 0 || k == kCorners + 1 ? 0.0 : (k % 2 ? 0.5 : -0.5);
+    const Eigen::Vector2d p = A + t * d + side * width * n;
+    pts += fmt::format("{:.3f},{:.3f} ", p.x(), p.y());
+  }
+  return pts + fmt::format("{:.3f},{:.3f}", B.x(), B.y());
+}
+
+}  // namespace
+
+std::string spring_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                            double duration) {
+  std::string svg;
+  for (const kin::Spring& s : model.springs()) {
+    if (frames.empty()) continue;
+    std::vector<std::string> values;
+    for (const KinPosition* f : frames)
+      values.push_back(zigzag(c, at(f->q, s.a.body, s.a.local), at(f->q, s.b.body, s.b.local), 4.0 * c.stroke));
+    svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"#2a7f2a\" stroke-width=\"{:.3f}\" "
+                       "stroke-linejoin=\"round\"><title>spring {}</title>{}</polyline>\n",
+                       values.front(), 0.6 * c.stroke, io::xml_escape(s.name), animate("points", values, duration));
+  }
+  return svg;
+}
+
+namespace {
+
+// The point of `body` that a revolute joint pins to `carrier`: the gear's axis.
+std::optional<kin::BodyPoint> axis_of(const kin::Model& model, int body, int carrier) {
+  for (const auto& mc : model.constraints()) {
+    const auto* r = dynamic_cast<const kin::Revolute*>(mc.constraint.get());
+    if (!r) continue;
+    if (r->a().body == body && r->b().body == carrier) return r->a();
+    if (r->b().body == body && r->a().body == carrier) return r->b();
+  }
+  return std::nullopt;
+}
+
+// k of a gear mesh's relation (theta_2 - theta_c) + k (theta_1 - theta_c) = const, by least
+// squares over the frames' steps: the element's tooth counts are the plugin's, not the solver's,
+// and k = z1/z2 (external, the gears turn opposite) or -z1/z2 (internal) is what the motion shows.
+std::optional<double> mesh_factor(const std::vector<const KinPosition*>& frames, int g1, int g2, int carrier) {
+  double s12 = 0.0, s11 = 0.0;
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    auto step = [&](int b) {
+      return std::remainder(angle_of(frames[i]->q, b) - angle_of(frames[i - 1]->q, b) - angle_of(frames[i]->q, carrier) +
+                                angle_of(frames[i - 1]->q, carrier),
+                            2.0 * std::numbers::pi);
+    };
+    const double d1 = step(g1), d2 = step(g2);
+    s12 += d1 * d2, s11 += d1 * d1;
+  }
+  if (!(s11 > 1e-12)) return std::nullopt;  // the gears did not turn: nothing tells their sizes
+  return -s12 / s11;
+}
+
+// One gear: its pitch circle (dashed) about its moving axis and a tooth mark, a radial tick on the
+// circle at the gear's angle, so that its turning shows.
+std::string gear_svg(const std::vector<const KinPosition*>& frames, const AnimationCanvas& c, const kin::BodyPoint& axis,
+                     double r, double duration, const std::string& name) {
+  std::vector<std::string> cx, cy, mark;
+  for (const KinPosition* f : frames) {
+    const Eigen::Vector2d o = at(f->q, axis.body, axis.local);
+    const double a = angle_of(f->q, axis.body);
+    const Eigen::Vector2d p = o + 0.85 * r * Eigen::Vector2d(std::cos(a), std::sin(a)), q = o + 1.12 * r * Eigen::Vector2d(std::cos(a), std::sin(a));
+    cx.push_back(fmt::format("{:.3f}", c.X(o.x())));
+    cy.push_back(fmt::format("{:.3f}", c.Y(o.y())));
+    mark.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(p.x()), c.Y(p.y()), c.X(q.x()), c.Y(q.y())));
+  }
+  return fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"none\" stroke=\"#b06000\" stroke-width=\"{:.3f}\" "
+                     "stroke-dasharray=\"{:.3f} {:.3f}\"><title>pitch circle {}</title>{}{}</circle>\n"
+                     "<path d=\"{}\" stroke=\"#b06000\" stroke-width=\"{:.3f}\"><title>tooth mark {}</title>{}</path>\n",
+                     cx.front(), cy.front(), r * c.scale, 0.6 * c.stroke, 3 * c.stroke, 1.5 * c.stroke, io::xml_escape(name),
+                     animate("cx", cx, duration), animate("cy", cy, duration), mark.front(), c.stroke, io::xml_escape(name),
+                     animate("d", mark, duration));
+}
+
+}  // namespace
+
+std::vector<GearCircle> gear_circles(const kin::Model& model, const std::vector<const KinPosition*>& frames) {
+  std::vector<GearCircle> out;
+  for (const auto& mc : model.constraints()) {
+    if (mc.constraint->kind() != "gear_mesh" || frames.size() < 2) continue;
+    const std::vector<int> b = mc.constraint->bodies();  // gear 2, gear 1, carrier (the gear_mesh element's order)
+    if (b.size() != 3) continue;
+    const std::optional<kin::BodyPoint> a2 = axis_of(model, b[0], b[2]), a1 = axis_of(model, b[1], b[2]);
+    const std::optional<double> k = mesh_factor(frames, b[1], b[0], b[2]);
+    if (!a1 || !a2 || !k || !(1.0 + *k > 1e-9)) continue;
+    const Eigen::VectorXd& q = frames.front()->q;
+    const double a = (at(q, a1->body, a1->local) - at(q, a2->body, a2->local)).norm();
+    // External: r1 + r2 = a, r1 = k r2; internal (k < 0, gear 2 the ring): r2 - r1 = a, r1 = -k r2.
+    // Both give r2 = a / (1 + k).
+    const double r2 = a / (1.0 + *k), r1 = std::abs(*k) * r2;
+    out.push_back({*a1, r1, model.bodies()[static_cast<std::size_t>(b[1])].name});
+    out.push_back({*a2, r2, model.bodies()[static_cast<std::size_t>(b[0])].name});
+  }
+  return out;
+}
+
+std::string gear_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                          double duration) {
+  std::string svg;
+  for (const GearCircle& g : gear_circles(model, frames)) svg += gear_svg(frames, c, g.axis, g.r, duration, g.name);
   return svg;
 }
 

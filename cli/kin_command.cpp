@@ -166,7 +166,7 @@ io::po::options_description kin_options() {
       "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
   add_coupler_options(desc);  // kin_coupler.cpp
   desc.add_options()("speed", io::po::value<std::string>()->value_name("SPEED"),
-                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm)")(
+                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm; default: the driver's speed in the file)")(
       "branch", io::po::value<std::string>()->value_name("continue|switch"),
       "at a change point (two branches cross, e.g. a parallelogram lying flat): go on along the branch that "
       "continues the motion smoothly (default) or switch to the other");

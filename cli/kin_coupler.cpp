@@ -2,6 +2,7 @@
 
 #include <gearkit/io/drawing_annotation.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/plot.hpp>
 #include <gearkit/io/report.hpp>
 
 #include <fmt/format.h>
@@ -37,6 +38,30 @@ std::string csv_table(const mechanism::Mechanism& mech, int driver, const Couple
     out += "\n";
   }
   return out;
+}
+
+// Rulers in mm along the bottom and the left of `box` (layer "scale"): a line over the ticked
+// range, a tick every nice step (io::axis_ticks, 1/2/5 x 10^n) with its value below or left of
+// it, and "x [mm]" / "y [mm]". The curves were drawn to scale with nothing to read a length by.
+void add_scale(io::Drawing& d, const io::Box& box, double h) {
+  const io::AxisTicks tx = io::axis_ticks(box.xmin, box.xmax, 6, io::AxisScale::linear, true);
+  const io::AxisTicks ty = io::axis_ticks(box.ymin, box.ymax, 6, io::AxisScale::linear, true);
+  const double yb = std::min(box.ymin, ty.lo) - 2.0 * h, xl = std::min(box.xmin, tx.lo) - 2.0 * h, tick = 0.8 * h;
+  d.lines.push_back({"scale", tx.lo, yb, tx.hi, yb});
+  d.lines.push_back({"scale", xl, ty.lo, xl, ty.hi});
+  const double mx = std::max(std::abs(tx.lo), std::abs(tx.hi)), my = std::max(std::abs(ty.lo), std::abs(ty.hi));
+  for (double x : tx.values) {
+    d.lines.push_back({"scale", x, yb, x, yb - tick});
+    const std::string t = io::tick_label(x, tx.step, mx);
+    d.texts.push_back({"scale", x - 0.5 * io::text_width(t, h), yb - tick - 1.3 * h, h, t});
+  }
+  for (double y : ty.values) {
+    d.lines.push_back({"scale", xl, y, xl - tick, y});
+    const std::string t = io::tick_label(y, ty.step, my);
+    d.texts.push_back({"scale", xl - tick - 0.5 * h - io::text_width(t, h), y - 0.4 * h, h, t});
+  }
+  d.texts.push_back({"scale", 0.5 * (tx.lo + tx.hi) - 0.5 * io::text_width("x [mm]", h), yb - tick - 3.0 * h, h, "x [mm]"});
+  d.texts.push_back({"scale", xl - 0.5 * io::text_width("y [mm]", h), ty.hi + 1.2 * h, h, "y [mm]"});
 }
 
 }  // namespace
@@ -103,7 +128,10 @@ void CouplerPaths::finish() {
 io::Drawing coupler_drawing(const mechanism::Mechanism& mech, const std::vector<CouplerPoint>& points,
                             const std::vector<std::vector<Eigen::Vector2d>>& paths) {
   io::Drawing d;
-  d.layers = {{"ground", 8, "#555555", false}, {"labels", 7, "#000000", false}, {"axes", 8, "#aaaaaa", true}};
+  d.layers = {{"ground", 8, "#555555", false},
+              {"labels", 7, "#000000", false},
+              {"axes", 8, "#aaaaaa", true},
+              {"scale", 7, "#000000", false}};
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::string layer = fmt::format("coupler_{}", k + 1);
     d.layers.push_back({layer, static_cast<int>(1 + k % 6), kColours[k % 5], false});
@@ -130,7 +158,9 @@ io::Drawing coupler_drawing(const mechanism::Mechanism& mech, const std::vector<
   }
   d.lines.push_back({"axes", box.xmin - 5, 0, box.xmax + 5, 0});
   d.lines.push_back({"axes", 0, box.ymin - 5, 0, box.ymax + 5});
-  d.texts.push_back({"labels", box.xmin, box.ymax + 3 * h, h, fmt::format("{}: coupler curves, Py against Px [mm]", mech.title)});
+  add_scale(d, io::drawing_box(d), h);
+  d.texts.push_back({"labels", box.xmin, io::drawing_box(d).ymax + 2 * h, h,
+                     fmt::format("{}: coupler curves, Py against Px [mm]", mech.title)});
   return d;
 }
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <limits>
+
 namespace gearkit::cli {
 
 namespace {
@@ -31,7 +33,11 @@ void KinPlot::add(const KinPosition& p) {
     return r.front();
   };
   if (p.transmission_angle) reducer(mu_).add(x, *p.transmission_angle * kRadToDeg);
-  if (p.forces) reducer(effort_).add(x, p.forces->effort_virtual_power[static_cast<std::size_t>(driver_)]);
+  // At a dead point the effort is unbounded: a gap (NaN) ends the curve before it instead of a
+  // spike of 1e15 that flattens the rest of the panel; the plot's mark shows where.
+  if (p.forces)
+    reducer(effort_).add(x, p.at_dead_point ? std::numeric_limits<double>::quiet_NaN()
+                                            : p.forces->effort_virtual_power[static_cast<std::size_t>(driver_)]);
 }
 
 std::string KinPlot::svg(std::vector<io::PlotMark> marks) const {

@@ -111,8 +111,8 @@ void KinWriter::fill_pictures(const KinAnalysis& a, io::Report& tail) {
       std::vector<io::PlotMark> marks;
       for (const kin::DeadPoint& d : a.dead_points)
         marks.push_back({shown_input(mech_, a.driver, d.input),
-                         fmt::format("dead point at {:.4g} {}: the sweep stops", shown_input(mech_, a.driver, d.input),
-                                     input_unit(mech_, a.driver))});
+                         fmt::format("dead point at {:.4g} {}: the sweep stops{}", shown_input(mech_, a.driver, d.input),
+                                     input_unit(mech_, a.driver), mech_.model.has_loads() ? " (effort unbounded: not plotted)" : "")});
       for (const kin::ChangePoint& c : a.change_points)
         marks.push_back({shown_input(mech_, a.driver, c.input),
                          fmt::format("change point at {:.4g} {}: branches cross", shown_input(mech_, a.driver, c.input),

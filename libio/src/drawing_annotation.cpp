@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
 
 namespace gearkit::io {
 
@@ -147,6 +149,145 @@ Box drawing_box(const Drawing& d) {
   }
   if (e.empty()) return {};
   return {e.xmin, e.ymin, e.xmax, e.ymax};
+}
+
+// ---- layout: text boxes against texts and curves ----------------------------------------------
+
+Box text_box(const Text& t) {
+  return {t.x, t.y - 0.25 * t.height, t.x + text_width(t.text, t.height), t.y + t.height};
+}
+
+bool overlaps(const Box& a, const Box& b) { return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax; }
+
+namespace {
+
+bool segment_crosses(const Box& b, double x1, double y1, double x2, double y2) {
+  return segment_meets_box(b.xmin, b.ymin, b.xmax, b.ymax, x1, y1, x2, y2);
+}
+
+bool arc_crosses(const Box& b, const Arc& a) {
+  constexpr double kStep = 0.0894;  // rad: a chord of this angle is within 1e-3 r of its arc
+  const double rad = std::numbers::pi / 180.0;
+  double sweep = std::fmod(std::fmod(a.end_deg - a.start_deg, 360.0) + 360.0, 360.0);
+  if (sweep == 0.0) sweep = 360.0;
+  const int n = std::max(1, static_cast<int>(std::ceil(sweep * rad / kStep)));
+  double px = a.cx + a.r * std::cos(a.start_deg * rad), py = a.cy + a.r * std::sin(a.start_deg * rad);
+  for (int i = 1; i <= n; ++i) {
+    const double t = (a.start_deg + sweep * i / n) * rad;
+    const double x = a.cx + a.r * std::cos(t), y = a.cy + a.r * std::sin(t);
+    if (segment_crosses(b, px, py, x, y)) return true;
+    px = x, py = y;
+  }
+  return false;
+}
+
+// A circle's outline meets the box when the box's nearest point is inside it and its farthest
+// corner outside.
+bool circle_crosses(const Box& b, const Circle& c) {
+  const double nx = std::clamp(c.cx, b.xmin, b.xmax) - c.cx, ny = std::clamp(c.cy, b.ymin, b.ymax) - c.cy;
+  const double fx = std::max(std::abs(b.xmin - c.cx), std::abs(b.xmax - c.cx));
+  const double fy = std::max(std::abs(b.ymin - c.cy), std::abs(b.ymax - c.cy));
+  return std::hypot(nx, ny) < c.r && std::hypot(fx, fy) > c.r;
+}
+
+bool polyline_crosses(const Box& b, const Polyline& p) {
+  bool hit = false;
+  for_each_segment(p, [&](const Vertex& u, const Vertex& v) {
+    if (hit) return;
+    if (u.bulge == 0.0 || (u.x == v.x && u.y == v.y)) hit = segment_crosses(b, u.x, u.y, v.x, v.y);
+    else hit = arc_crosses(b, arc_of_bulge(u, v));
+  });
+  return hit;
+}
+
+// A label's own leader ends 0.4 h before its text (add_label): a line ending that close to the
+// box's left or right edge at the text's middle height is the text's own and does not count.
+bool own_leader(const Text& t, const Line& l) {
+  const Box b = text_box(t);
+  for (const auto& [x, y] : {std::pair{l.x1, l.y1}, std::pair{l.x2, l.y2}}) {
+    const bool beside = std::min(std::abs(x - b.xmin), std::abs(x - b.xmax)) <= 0.5 * t.height;
+    if (beside && y > b.ymin && y < b.ymax) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+namespace {
+
+// crossed_by_curves, leaving out the leader lines of the text `own` (when given).
+bool crossed_except_leader(const Drawing& d, const Box& b, const Text* own) {
+  for (const Line& l : d.lines)
+    if (!(own && own_leader(*own, l)) && segment_crosses(b, l.x1, l.y1, l.x2, l.y2)) return true;
+  for (const Polyline& p : d.polylines)
+    if (polyline_crosses(b, p)) return true;
+  for (const Circle& c : d.circles)
+    if (circle_crosses(b, c)) return true;
+  for (const Arc& a : d.arcs)
+    if (arc_crosses(b, a)) return true;
+  return false;
+}
+
+}  // namespace
+
+bool crossed_by_curves(const Drawing& d, const Box& b) { return crossed_except_leader(d, b, nullptr); }
+
+bool fits(const Drawing& d, const Drawing& added) {
+  for (const Text& t : added.texts) {
+    const Box b = text_box(t);
+    if (crossed_by_curves(d, b) || crossed_except_leader(added, b, &t)) return false;
+    for (const Text& o : d.texts)
+      if (overlaps(b, text_box(o))) return false;
+  }
+  for (const Line& l : added.lines)
+    for (const Text& o : d.texts)
+      if (segment_crosses(text_box(o), l.x1, l.y1, l.x2, l.y2)) return false;
+  return true;
+}
+
+void append(Drawing& d, const Drawing& added) {
+  d.polylines.insert(d.polylines.end(), added.polylines.begin(), added.polylines.end());
+  d.lines.insert(d.lines.end(), added.lines.begin(), added.lines.end());
+  d.circles.insert(d.circles.end(), added.circles.begin(), added.circles.end());
+  d.arcs.insert(d.arcs.end(), added.arcs.begin(), added.arcs.end());
+  d.texts.insert(d.texts.end(), added.texts.begin(), added.texts.end());
+}
+
+std::size_t place_first_fitting(Drawing& d, const std::vector<Drawing>& candidates) {
+  std::size_t chosen = 0;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (fits(d, candidates[i])) {
+      chosen = i;
+      break;
+    }
+  }
+  append(d, candidates.at(chosen));
+  return chosen;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> overlapping_texts(const Drawing& d) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (std::size_t i = 0; i < d.texts.size(); ++i)
+    for (std::size_t j = i + 1; j < d.texts.size(); ++j)
+      if (overlaps(text_box(d.texts[i]), text_box(d.texts[j]))) out.emplace_back(i, j);
+  return out;
+}
+
+std::vector<std::size_t> texts_crossed_by_curves(const Drawing& d) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < d.texts.size(); ++i)
+    if (crossed_except_leader(d, text_box(d.texts[i]), &d.texts[i])) out.push_back(i);
+  return out;
+}
+
+void add_frame(Drawing& d, double margin, const std::string& layer) {
+  const Box b = drawing_box(d);
+  Polyline p;
+  p.layer = layer;
+  p.closed = true;
+  p.vertices = {{b.xmin - margin, b.ymin - margin, 0.0}, {b.xmax + margin, b.ymin - margin, 0.0},
+                {b.xmax + margin, b.ymax + margin, 0.0}, {b.xmin - margin, b.ymax + margin, 0.0}};
+  d.polylines.push_back(std::move(p));
 }
 
 }  // namespace gearkit::io

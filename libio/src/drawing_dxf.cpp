@@ -23,6 +23,18 @@ namespace gearkit::io {
 // dxf2pdf output: 24 characters of height 9.4 px span 193 px), where the annotation layouts leave
 // 0.62 h (drawing_annotation.hpp, as a sans-serif in SVG takes): texts are written narrowed to fit.
 constexpr double kTextWidthFactor = 0.72;
+
+// Every TEXT uses one style whose NAME is a LibreCAD font with Greek letters and whose FONT FILE is
+// Arial, which AutoCAD, BricsCAD, QCAD and DraftSight all find and which has Greek too. LibreCAD
+// picks a TEXT's font by its style name and ignores the style's file (measured on LibreCAD 2.2
+// dxf2pdf: style "Standard" with file "txt", "iso3098" or "iso3098.shx" drew alpha as the lozenge
+// of standard.lff; style "iso3098" drew it); the other programs go by the file. The "txt" font
+// loses the Greek of the gear data block (alpha_n, beta, rho_fP*) and its underscore is a letter
+// wide ("m__n"); iso3098.lff has the Greek but no '*'. OpenGOST type B (lettering of GOST 2.304,
+// the ISO 3098 type B shapes) has all of them; ctest render.html_and_pdf checks every character
+// written against the font file.
+constexpr std::string_view kTextStyle = "lc_opengost-br";
+constexpr std::string_view kTextFontFile = "arial.ttf";
 namespace {
 
 using Handle = std::uint64_t;
@@ -96,7 +108,7 @@ struct Skeleton {
   Handle vport_table, ltype_table, layer_table, style_table, view_table, ucs_table, appid_table,
       dimstyle_table, block_record_table;
   Handle vport_active, ltype_byblock, ltype_bylayer, ltype_continuous, ltype_dashed, style_standard,
-      appid_acad, dimstyle_standard;
+      style_text, appid_acad, dimstyle_standard;
   Handle model_record, paper_record, model_block, model_endblk, paper_block, paper_endblk;
   Handle root_dict, group_dict, layout_dict, mlinestyle_dict, plotsettings_dict, plotstylename_dict,
       plotstyle_normal, mlinestyle_standard, model_layout, paper_layout;
@@ -151,7 +163,7 @@ class DxfDocument {
     Skeleton& s = sk_;
     for (Handle* h : {&s.vport_table, &s.ltype_table, &s.layer_table, &s.style_table, &s.view_table, &s.ucs_table,
                       &s.appid_table, &s.dimstyle_table, &s.block_record_table, &s.vport_active, &s.ltype_byblock,
-                      &s.ltype_bylayer, &s.ltype_continuous, &s.ltype_dashed, &s.style_standard, &s.appid_acad,
+                      &s.ltype_bylayer, &s.ltype_continuous, &s.ltype_dashed, &s.style_standard, &s.style_text, &s.appid_acad,
                       &s.dimstyle_standard, &s.model_record, &s.paper_record, &s.model_block, &s.model_endblk,
                       &s.paper_block, &s.paper_endblk, &s.root_dict, &s.group_dict, &s.layout_dict,
                       &s.mlinestyle_dict, &s.plotsettings_dict, &s.plotstylename_dict, &s.plotstyle_normal,
@@ -334,16 +346,21 @@ class DxfDocument {
   }
 
   void write_style_table(TagWriter& w) const {
-    table_begin(w, "STYLE", sk_.style_table, 1);
-    record_begin(w, "STYLE", sk_.style_standard, sk_.style_table, "AcDbTextStyleTableRecord", "Standard");
+    table_begin(w, "STYLE", sk_.style_table, 2);
+    write_style(w, sk_.style_standard, "Standard", "txt");
+    write_style(w, sk_.style_text, kTextStyle, kTextFontFile);
+    w.tag(0, "ENDTAB");
+  }
+
+  void write_style(TagWriter& w, Handle h, std::string_view name, std::string_view font_file) const {
+    record_begin(w, "STYLE", h, sk_.style_table, "AcDbTextStyleTableRecord", name);
     w.real(40, 0);
     w.real(41, kTextWidthFactor);
     w.real(50, 0);
     w.tag(71, 0);
     w.real(42, 2.5);
-    w.tag(3, "txt");
+    w.tag(3, font_file);
     w.tag(4, "");
-    w.tag(0, "ENDTAB");
   }
 
   void write_dimstyle_table(TagWriter& w) const {
@@ -489,7 +506,7 @@ class DxfDocument {
     w.real(40, t.height > 0 ? t.height : 2.5);
     w.tag(1, dxf_text(t.text));
     w.real(41, kTextWidthFactor);
-    w.tag(7, "Standard");
+    w.tag(7, kTextStyle);
     w.tag(100, "AcDbText");
     extents_.add(t.x, t.y);
   }

@@ -37,6 +37,28 @@ void for_each_segment(const Polyline& p, F&& f) {
   if (p.closed) f(p.vertices[n - 1], p.vertices[0]);
 }
 
+/// Whether the segment (x1, y1)-(x2, y2) has a point in the closed box [xmin, xmax] x [ymin, ymax]
+/// (Liang-Barsky: the parameter interval left after clipping against each slab is not empty).
+/// Shared by the plot's legend placement and the drawings' label placement.
+inline bool segment_meets_box(double xmin, double ymin, double xmax, double ymax, double x1, double y1, double x2,
+                              double y2) {
+  double t0 = 0, t1 = 1;
+  const double dx = x2 - x1, dy = y2 - y1;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {x1 - xmin, xmax - x1, y1 - ymin, ymax - y1};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;  // parallel to this edge and outside it
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
 /// Axis-aligned bounding box.
 struct Extents {
   double xmin = std::numeric_limits<double>::infinity(), ymin = std::numeric_limits<double>::infinity();

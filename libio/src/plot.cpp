@@ -10,6 +10,8 @@
 #include <string>
 #include <gearkit/io/xml.hpp>
 
+#include "drawing_geometry.hpp"
+
 namespace gearkit::io {
 
 namespace {
@@ -71,24 +73,8 @@ struct Segment {
   double x1, y1, x2, y2;
 };
 
-// Liang-Barsky: whether the segment has a point inside the rectangle.
-bool crosses(const Segment& s, const Rect& r) {
-  double t0 = 0, t1 = 1;
-  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
-  const double p[4] = {-dx, dx, -dy, dy};
-  const double q[4] = {s.x1 - r.x, r.x + r.w - s.x1, s.y1 - r.y, r.y + r.h - s.y1};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
+// Whether the segment has a point inside the rectangle.
+bool crosses(const Segment& s, const Rect& r) { return segment_meets_box(r.x, r.y, r.x + r.w, r.y + r.h, s.x1, s.y1, s.x2, s.y2); }
 
 // Glyph count, a UTF-8 sequence counting once.
 std::size_t glyphs(const std::string& s) {

@@ -361,6 +361,7 @@ class Reader {
                                  angular ? "rad/s" : "m/s", 1.0);
     motion.acceleration = d.quantity_or("acceleration", angular ? Quantity::angular_acceleration : Quantity::acceleration,
                                         angular ? "rad/s^2" : "m/s^2", 0.0);
+    if (d.has("speed")) md.speed = motion.speed;
     double drawn = 0.0;
     std::shared_ptr<const kin::Constraint> c;
     if (angular) {

@@ -1,6 +1,7 @@
 #include "gear_drawing.hpp"
 
 #include <gearkit/gear/accuracy.hpp>
+#include <gearkit/io/drawing_annotation.hpp>
 #include <gearkit/io/error.hpp>
 
 #include <fmt/format.h>
@@ -212,6 +213,7 @@ io::Drawing gear_drawing(const gg::GearPairInput& in, const gg::GearPairResult& 
   const double x = box.xmax + 4.0 * h;
   const io::Size block = io::add_table(d, gear_data_table(in, r, insp, which), x, box.ymax, h, "data_block", "frame");
   title_block(d, in, o, x, box.ymax - block.height - 2.0 * h, h);
+  io::add_frame(d, 2.0 * h, "frame");  // what "fit to page" fits: labels at the edge stay on the page
   return d;
 }
 

@@ -246,6 +246,31 @@ struct Shaft {                // a central member's connection
   std::string role;
 };
 
+// A label's candidate positions, in order of preference; placed once every line is drawn, at the
+// first position where no line crosses it and no other label overlaps it (io::place_first_fitting).
+using Candidates = std::vector<io::Drawing>;
+
+io::Drawing one_text(const std::string& layer, double x, double y, const std::string& text) {
+  io::Drawing d;
+  d.texts.push_back({layer, x, y, kText, text});
+  return d;
+}
+
+// A text at each of the heights ys (outer) and left edges xs (inner), in that order.
+Candidates grid(const std::string& layer, std::initializer_list<double> xs, std::initializer_list<double> ys,
+                const std::string& text) {
+  Candidates c;
+  for (double y : ys)
+    for (double x : xs) c.push_back(one_text(layer, x, y, text));
+  return c;
+}
+
+// A text at (x, y) or x_alt, then the same shifted by 1.6 text heights down and up, twice.
+Candidates shifted(const std::string& layer, double x, double x_alt, double y, const std::string& text) {
+  const double k = 1.6 * kText;
+  return grid(layer, {x, x_alt}, {y, y - k, y + k, y - 2 * k, y + 2 * k}, text);
+}
+
 struct Roles {
   std::vector<std::string> role;  // per member
   std::vector<int> side;          // per member: -1, +1 or 0 (free)
@@ -348,23 +373,36 @@ std::vector<Shaft> shafts(const gt::TrainModel& m, const Layout& L, const Roles&
   return s;
 }
 
-void gear_bar(io::Drawing& d, const gt::TrainModel& m, const Layout& L, const std::vector<Shaft>& s, gt::GearId g) {
+// A gear as a bar (an internal gear as an open bracket) and its label "name: z = N" beside it:
+// right of the bar at heights along it, then left of it (a ring: left of its rim, right of it,
+// above it).
+void gear_bar(io::Drawing& d, std::vector<Candidates>& labels, const gt::TrainModel& m, const Layout& L,
+              const std::vector<Shaft>& s, gt::GearId g) {
   const gt::Gear& gear = m.gear(g);
   const double xl = slot_x(L.slot_lo[g]) - 0.5 * kBar, xr = slot_x(L.slot_hi[g]) + 0.5 * kBar;
   const double y0 = L.y[gear.member], r = L.r[g];
   const std::string label = fmt::format("{}: z = {}", gear.name, gear.z);
+  const double w = io::text_width(label, kText);
+  Candidates c;
   if (gear.kind == gt::GearKind::internal) {
     d.polylines.push_back({"gears", {{xl, y0 + r, 0}, {xl, y0 + r + kDepth, 0}, {xr, y0 + r + kDepth, 0}, {xr, y0 + r, 0}}, false});
     if (L.ground_mesh[g])
       d.polylines.push_back({"gear_mirror", {{xl, y0 - r, 0}, {xl, y0 - r - kDepth, 0}, {xr, y0 - r - kDepth, 0}, {xr, y0 - r, 0}}, false});
-    d.texts.push_back({"gear_labels", xl - 0.8 - io::text_width(label, kText), y0 + r + 0.2, kText, label});
+    for (double y : {y0 + r + 0.2, y0 + r - 1.4 * kText, y0 + r + kDepth + 0.6})
+      for (double x : {xl - 0.8 - w, xr + 0.8}) c.push_back(one_text("gear_labels", x, y, label));
+    labels.push_back(std::move(c));
     return;
   }
   const bool whole = L.ground_mesh[g] || m.is_planet(gear.member);
   const double bottom = whole ? y0 - r : s[gear.member].lane_y;
   d.polylines.push_back({"gears", {{xl, bottom, 0}, {xr, bottom, 0}, {xr, y0 + r, 0}, {xl, y0 + r, 0}}, true});
   const double ty = m.is_planet(gear.member) ? y0 + 0.45 * r : y0 + std::max(0.55 * r, r - 2.0 * kText);
-  d.texts.push_back({"gear_labels", xr + 0.8, ty, kText, label});
+  for (double x : {xr + 0.8, xl - 0.8 - w})
+    for (double k = 0.0; k < 12.0; k += 1.0)
+      for (double y : {ty - 1.6 * kText * k, ty + 1.6 * kText * k})
+        if (y > bottom + 0.3 * kText && y < y0 + r - kText && (k > 0.0 || y == ty)) c.push_back(one_text("gear_labels", x, y, label));
+  if (c.empty()) c.push_back(one_text("gear_labels", xr + 0.8, ty, label));
+  labels.push_back(std::move(c));
 }
 
 void ground_hatch(io::Drawing& d, double x0, double y0, double x1, double y1, double nx, double ny) {
@@ -384,13 +422,13 @@ std::string member_text(const gt::TrainModel& m, gt::MemberId i, const std::stri
 }
 
 // A central member: its shaft line, its arm, its exit or ground, its name.
-void central_member(io::Drawing& d, const gt::TrainModel& m, const Layout& L, const Shaft& sh, gt::MemberId i,
-                    double edge_left, double edge_right) {
+void central_member(io::Drawing& d, std::vector<Candidates>& labels, const gt::TrainModel& m, const Layout& L,
+                    const Shaft& sh, gt::MemberId i, double edge_left, double edge_right) {
   const double y0 = L.y[i];
   const std::string name = member_text(m, i, sh.role);
   if (sh.ground_on_rim) {
     ground_hatch(d, sh.x_lo - 3.0, y0 + sh.attach, sh.x_hi + 3.0, y0 + sh.attach, 0.0, 1.0);
-    d.texts.push_back({"member_labels", sh.x_lo - 3.0, y0 + sh.attach + 2.2, kText, name});
+    labels.push_back(shifted("member_labels", sh.x_lo - 3.0, sh.x_hi + 3.0, y0 + sh.attach + 2.2, name));
     return;
   }
   const bool carrier = carries_planets(m, i);
@@ -413,17 +451,26 @@ void central_member(io::Drawing& d, const gt::TrainModel& m, const Layout& L, co
     ground_hatch(d, edge, sh.lane_y - 2.0, edge, sh.lane_y + 2.0, sh.side * 1.0, 0.0);
   if (sh.exits) {
     const double tx = sh.side < 0 ? edge - 2.5 - io::text_width(name, kText) : edge + 2.5;
-    d.texts.push_back({"member_labels", tx, sh.lane_y - 0.4 * kText, kText, name});
-  } else if (sh.attach > 0) {
-    const double tx = sh.side < 0 ? sh.arm_x - 1.0 - io::text_width(name, kText) : sh.arm_x + 1.0;
-    d.texts.push_back({"member_labels", tx, y0 + sh.attach + 0.6, kText, name});
-  } else {
-    d.texts.push_back({"member_labels", 0.5 * (sh.x_lo + sh.x_hi) + 1.5, sh.lane_y - 1.4 * kText, kText, name});
+    labels.push_back(shifted("member_labels", tx, tx, sh.lane_y - 0.4 * kText, name));
+  } else if (sh.attach > 0) {  // beside its arm, on the outer side first
+    const double w = io::text_width(name, kText), left = sh.arm_x - 1.0 - w, right = sh.arm_x + 1.0;
+    Candidates c = shifted("member_labels", sh.side < 0 ? left : right, sh.side < 0 ? right : left, y0 + sh.attach + 0.6, name);
+    // ... else at the foot of the arm, by its shaft's end (between other arms there may be no room).
+    const double end = sh.side < 0 ? std::min(far, near) - 0.8 - w : std::max(far, near) + 0.8;
+    for (Candidates more = grid("member_labels", {end, right, left}, {sh.lane_y - 0.4 * kText, sh.lane_y - 1.6 * kText, sh.lane_y + 0.6}, name);
+         auto& m : more)
+      c.push_back(std::move(m));
+    labels.push_back(std::move(c));
+  } else {  // along its shaft between its gears, below or above it
+    const double w = io::text_width(name, kText), mid = 0.5 * (sh.x_lo + sh.x_hi);
+    labels.push_back(grid("member_labels", {mid + 1.5, mid - 0.5 * w, sh.x_lo + 1.5, sh.x_hi - 1.5 - w},
+                          {sh.lane_y - 1.4 * kText, sh.lane_y + 0.6, sh.lane_y - 3.0 * kText}, name));
   }
 }
 
 // A planet: its pin from the far side of its gears to its arm.
-void planet(io::Drawing& d, const gt::TrainModel& m, const Layout& L, const std::vector<Shaft>& s, gt::MemberId p) {
+void planet(io::Drawing& d, std::vector<Candidates>& labels, const gt::TrainModel& m, const Layout& L,
+            const std::vector<Shaft>& s, gt::MemberId p) {
   const gt::MemberId c = m.member(p).carried_by;
   double lo = 1e300, hi = -1e300;
   for (gt::GearId g = 0; g < m.gears().size(); ++g)
@@ -435,7 +482,8 @@ void planet(io::Drawing& d, const gt::TrainModel& m, const Layout& L, const std:
   d.lines.push_back({"carriers", std::min(arm_x, far), L.y[p], std::max(arm_x, far), L.y[p]});
   const std::string name = m.member(p).name + (m.member(p).planet_count > 1 ? fmt::format(" (x{})", m.member(p).planet_count) : "");
   const double tx = arm_x < lo ? far + 0.8 : far - 0.8 - io::text_width(name, kText);
-  d.texts.push_back({"member_labels", tx, L.y[p] - 0.4 * kText, kText, name});
+  const double other = arm_x < lo ? lo - 3.8 - io::text_width(name, kText) : hi + 3.8;
+  labels.push_back(shifted("member_labels", tx, other, L.y[p] - 0.4 * kText, name));
 }
 
 void stick_diagram(io::Drawing& d, const gt::TrainModel& m, const Layout& L, const std::vector<Shaft>& s) {
@@ -447,12 +495,14 @@ void stick_diagram(io::Drawing& d, const gt::TrainModel& m, const Layout& L, con
   for (gt::MemberId i = 0; i < m.member_count(); ++i)
     if (L.drawn[i] && !m.is_planet(i) && std::find(axes.begin(), axes.end(), L.y[i]) == axes.end()) axes.push_back(L.y[i]);
   for (double y : axes) d.lines.push_back({"axes", edge_left - 2.0, y, edge_right + 2.0, y});
-  for (gt::GearId g = 0; g < m.gears().size(); ++g) gear_bar(d, m, L, s, g);
+  std::vector<Candidates> labels;
+  for (gt::GearId g = 0; g < m.gears().size(); ++g) gear_bar(d, labels, m, L, s, g);
   for (gt::MemberId i = 0; i < m.member_count(); ++i) {
     if (!L.drawn[i]) continue;
-    if (m.is_planet(i)) planet(d, m, L, s, i);
-    else central_member(d, m, L, s[i], i, edge_left, edge_right);
+    if (m.is_planet(i)) planet(d, labels, m, L, s, i);
+    else central_member(d, labels, m, L, s[i], i, edge_left, edge_right);
   }
+  for (const Candidates& c : labels) io::place_first_fitting(d, c);
 }
 
 // ---- speed diagram ---------------------------------------------------------------------------
@@ -494,6 +544,27 @@ std::vector<Ray> speed_rays(const gt::TrainModel& m, const Layout& L, const std:
   return rays;
 }
 
+// Swaps the slots of two leaders (from end_of(slot) to (x, slot_y(slot))) that cross, until none
+// do; at most n^2 rounds, as a safeguard.
+template <class EndOf, class SlotY>
+void uncross_leaders(std::vector<std::size_t>& order, EndOf end_of, SlotY slot_y, double x) {
+  auto cross = [&](std::size_t a, std::size_t b) {
+    const auto [ax, ay] = end_of(a);
+    const auto [bx, by] = end_of(b);
+    const double ay1 = slot_y(a), by1 = slot_y(b);
+    auto side = [](double px, double py, double qx, double qy, double rx, double ry) { return (qx - px) * (ry - py) - (qy - py) * (rx - px); };
+    return side(ax, ay, x, ay1, bx, by) * side(ax, ay, x, ay1, x, by1) < 0 && side(bx, by, x, by1, ax, ay) * side(bx, by, x, by1, x, ay1) < 0;
+  };
+  const std::size_t n = order.size();
+  for (std::size_t round = 0; round < n * n + 1; ++round) {
+    bool swapped = false;
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        if (cross(a, b)) std::swap(order[a], order[b]), swapped = true;
+    if (!swapped) return;
+  }
+}
+
 void speed_diagram(io::Drawing& d, const gt::TrainModel& m, const Layout& L, const std::vector<Shaft>& s,
                    const TrainDiagramInput& in, gt::MemberId group, double x0) {
   const double y0 = L.y[group];
@@ -514,11 +585,22 @@ void speed_diagram(io::Drawing& d, const gt::TrainModel& m, const Layout& L, con
   d.texts.push_back({"speed_labels", xl, y0 - 2.0 * kText, kText, "speed (Kutzbach) diagram: peripheral speed v = n r"});
   d.texts.push_back({"speed_labels", xl, y0 - 3.8 * kText, kText,
                      fmt::format("against the radius r; n in {}, read where a ray meets the top line", in.speed_unit)});
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    const Ray& r = rays[i];
-    d.lines.push_back({"speed_rays", xc + k * r.v0, y0 + r.r0, xc + k * r.v1, y0 + r.r1});
+  for (const Ray& r : rays) d.lines.push_back({"speed_rays", xc + k * r.v0, y0 + r.r0, xc + k * r.v1, y0 + r.r1});
+  // Leaders run from the rays' upper ends up to a column of labels on the right. Slots are
+  // assigned leftmost end to the top, then any two crossing leaders swap slots until none cross
+  // (each swap shortens the leaders in total, so it ends): the order of the members crossed them.
+  std::vector<std::size_t> order(rays.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return rays[a].v1 != rays[b].v1 ? rays[a].v1 < rays[b].v1 : rays[a].r1 > rays[b].r1;
+  });
+  auto slot_y = [&](std::size_t slot) { return y0 + top + 8.0 + 1.8 * kText * static_cast<double>(order.size() - 1 - slot); };
+  auto end_of = [&](std::size_t slot) { return std::pair{xc + k * rays[order[slot]].v1, y0 + rays[order[slot]].r1}; };
+  uncross_leaders(order, end_of, slot_y, xr + 4.0);
+  for (std::size_t slot = 0; slot < order.size(); ++slot) {
+    const Ray& r = rays[order[slot]];
     const std::string text = fmt::format("{}: n = {} {}", m.member(r.member).name, short_number(*in.speeds[r.member]), in.speed_unit);
-    const double ty = y0 + top + 8.0 + 1.8 * kText * static_cast<double>(rays.size() - 1 - i);
+    const double ty = slot_y(slot);
     io::add_label(d, xc + k * r.v1, y0 + r.r1, xr + 4.0, ty, text, kText, "speed_labels");
   }
 }

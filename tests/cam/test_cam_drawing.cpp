@@ -2,6 +2,7 @@
 // ezdxf: the motion program as the model file states it, the checks equal to the JSON report of
 // the same run, the key radii dimensioned with the model's values, the legend, the zero-angle
 // mark and the segment angles, the follower at cam angle 0.
+#include "dxf_drawing.hpp"
 #include "run_gearkit.hpp"
 
 #include <gtest/gtest.h>
@@ -72,7 +73,8 @@ TEST(CamDrawing, TablesLegendAndDimensionsCarryTheModelAndTheReport) {
   EXPECT_TRUE(has(dims, "R_p = 50.000 (prime)"));
   EXPECT_TRUE(has(dims, "r_r = 10.000"));
   EXPECT_TRUE(has(dims, "R_max = " + f(r.report["radius_max_mm"], 3)));
-  EXPECT_TRUE(has(dims, "rotation: counter-clockwise"));
+  EXPECT_TRUE(has(dims, "rotation:"));
+  EXPECT_TRUE(has(dims, "counter-clockwise"));
   ASSERT_EQ(d["circles"]["prime_circle"].size(), 1u);
   EXPECT_NEAR(d["circles"]["prime_circle"][0][2].get<double>(), 50.0, 1e-9);
   // The legend names each curve drawn; the DXF's follower is at cam angle 0.
@@ -96,6 +98,16 @@ TEST(CamDrawing, TablesLegendAndDimensionsCarryTheModelAndTheReport) {
   EXPECT_NE(r.svg.find("R_b = 40.000 (base)"), std::string::npos);
 }
 
+TEST(CamDrawing, TitleBlockStatesTheCamAngleDrawn) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  // The DXF is at cam angle 0 (profile as cut); the SVG at the file's follower_at: 60 deg
+  // (examples/cams/translating_roller_cycloidal.yaml), the cam turned with it.
+  const CamRun r = run("translating_roller_cycloidal.yaml");
+  EXPECT_TRUE(has(r.dxf["texts"]["title_block"], "cam angle 0.0° (profile layers as cut)"));
+  EXPECT_NE(r.svg.find("cam angle 60.0° (cam turned 60.0° from the cutting position)"), std::string::npos);
+  EXPECT_EQ(r.svg.find("cam angle 0.0° (profile layers as cut)"), std::string::npos);
+}
+
 TEST(CamDrawing, ZeroMarkPointsAtTheFollowerAtCamAngleZero) {
   if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
   // Translating follower on the axis x = 0, above the cam: the zero mark runs from the centre
@@ -110,4 +122,20 @@ TEST(CamDrawing, ZeroMarkPointsAtTheFollowerAtCamAngleZero) {
     EXPECT_GT(l[3].get<double>(), 50.0);
   }
   EXPECT_TRUE(found);
+}
+
+TEST(CamDrawing, NoLabelOverlapsAnotherOrIsCrossedByACurve) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  // Every shipped cam: texts (labels, dimensions, angle marks, tables) clear of each other and of
+  // every curve (profile, pitch curve, tool path, circles, dimension lines), as read back from
+  // the DXF. The audit saw the profile through R_b and R_p and R_max's line through the rotation
+  // text of translating_roller_cycloidal.yaml.
+  for (const char* example : {"translating_roller_cycloidal.yaml", "translating_flat_345.yaml", "groove_cam.yaml",
+                              "conjugate_oscillating.yaml", "offset_knife_table.yaml", "oscillating_flat_modified_trapezoid.yaml",
+                              "otm2015_p2_oscillating_cycloidal.yaml", "double_dwell_dynamics.yaml"}) {
+    const CamRun r = run(example);
+    const gearkit::io::Drawing d = gearkit::testing::drawing_from_dump(r.dxf);
+    ASSERT_GT(d.texts.size(), 20u) << example;
+    EXPECT_EQ(gearkit::testing::layout_faults(d), "") << example;
+  }
 }

@@ -1,5 +1,6 @@
 // CLI tests of the gear drawing (plugins/gear/gear_drawing.hpp): the DXF read back by ezdxf, an
 // independent reader; the data block's numbers are compared with the JSON report of the same run.
+#include "dxf_drawing.hpp"
 #include "run_gearkit.hpp"
 
 #include <gtest/gtest.h>
@@ -119,4 +120,32 @@ TEST(GearDrawing, BadDrawingOptions) {
   const auto ok = run_gearkit("gear --z1 20 --z2 60 --module 2 --tolerance 0.5um --svg " + svg);
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_NE(gearkit::testing::slurp(dir / "x.svg").find("within 0.0005 mm"), std::string::npos);
+}
+
+TEST(GearDrawing, LabelsClearOfEachOtherAndOfCurvesInsideTheFrame) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  // The pair the audit printed with LibreCAD ("d = 60.000 (reference)" cut at the page edge), a
+  // ring pair and one gear: no text box overlaps another or is crossed by a curve, and every text
+  // lies inside the frame, which "fit to page" fits.
+  const fs::path dir = gearkit::testing::scratch_dir("gear-layout");
+  for (const std::string args : {"--z1 20 --z2 40 --module 3 --x1 0.2 --x2 0.1 --quality 7",
+                                 "--z1 20 --z2 60 --module 2 --internal --quality 7", "--z1 17 --z2 40 --module 2 --draw gear1"}) {
+    const fs::path dxf = dir / "g.dxf";
+    const auto r = run_gearkit("gear " + args + " --dxf " + shell_quote(dxf.string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = dump(dxf);
+    const gearkit::io::Drawing d = gearkit::testing::drawing_from_dump(j);
+    EXPECT_EQ(gearkit::testing::layout_faults(d), "") << args;
+    const auto& frames = j["polyline_shapes"]["frame"];
+    ASSERT_EQ(frames.size(), 1u) << args;
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+    for (const auto& p : frames[0]["points"]) {
+      xmin = std::min(xmin, p[0].get<double>()), xmax = std::max(xmax, p[0].get<double>());
+      ymin = std::min(ymin, p[1].get<double>()), ymax = std::max(ymax, p[1].get<double>());
+    }
+    for (const auto& t : d.texts) {
+      const gearkit::io::Box b = gearkit::io::text_box(t);
+      EXPECT_TRUE(b.xmin > xmin && b.xmax < xmax && b.ymin > ymin && b.ymax < ymax) << t.text << " " << args;
+    }
+  }
 }

@@ -182,6 +182,43 @@ TEST(KinCommand, DeadPointInASweepIsAWarning) {
   EXPECT_EQ(run_gearkit("kin " + shell_quote(file) + " --strict").status, 3);
 }
 
+// A crank-rocker (Norton's four-bar: crank 40, coupler 120, rocker 80, ground 100 mm) driven by
+// its rocker with masses on the links: the rocker cannot pass the position where crank and
+// coupler overlap in line, |B O2| = 120 - 40 = 80 mm; with |B O2|^2 = 100^2 + 80^2 + 2 100 80
+// cos(theta4) (law of cosines at O4), theta4 = acos((80^2 - 100^2 - 80^2) / (2 100 80)) = 128.68 deg. Approaching it the crank's speed and so the driving
+// torque grow without bound; the value at the located dead point (about 1e15 N m) is no torque.
+TEST(KinCommand, DeadPointTorqueIsAGapInThePlotNotASpike) {
+  const auto dir = scratch_dir("kin-dead-torque");
+  // examples/mechanisms/four_bar.yaml (masses, gravity) with the rocker as the driver.
+  std::string text = slurp(kExamples + "four_bar.yaml");
+  const std::string crank_driver = "  - {name: theta2, type: angle, link: crank, speed: 25 rad/s, range: [0 deg, 360 deg, 2 deg]}";
+  ASSERT_NE(text.find(crank_driver), std::string::npos);
+  text.replace(text.find(crank_driver), crank_driver.size(),
+               "  - {name: theta4d, type: angle, link: rocker, speed: 5 rad/s, range: [60 deg, 130 deg, 1 deg]}");
+  const std::string file = write(dir, "rocker_driven.yaml", text);
+  const std::string plot = (dir / "plot.svg").string();
+  const auto j = run_json(shell_quote(file) + " --plot " + shell_quote(plot));
+  ASSERT_EQ(j["dead_points"].size(), 1u);
+  const double dead = j["dead_points"][0]["input_deg"].get<double>();
+  EXPECT_NEAR(dead, std::acos((80.0 * 80 - 100 * 100 - 80 * 80) / (2.0 * 100 * 80)) * 180 / M_PI, 1e-6);
+  // JSON and tables keep the row at the dead point (docs/kin.md), the driving torque included.
+  EXPECT_NEAR(j["positions"].back()["input_deg"].get<double>(), dead, 1e-9);
+  EXPECT_TRUE(j["positions"].back()["driving_torque_Nm"].is_number());
+  // The plot: no y tick of 1000 or more (the spike made the torque axis run to 3500T, "T" for
+  // tera), and the dead point's note says the effort is not plotted there.
+  const std::string svg = slurp(plot);
+  std::size_t ticks = 0;
+  for (std::size_t at = svg.find("text-anchor=\"end\">"); at != std::string::npos; at = svg.find("text-anchor=\"end\">", at + 1)) {
+    const std::size_t from = svg.find('>', at) + 1, to = svg.find('<', from);
+    const std::string label = svg.substr(from, to - from);
+    ++ticks;
+    EXPECT_EQ(label.find_first_of("kMGTP"), std::string::npos) << label;
+    EXPECT_LT(std::abs(std::stod(label)), 1000.0) << label;
+  }
+  EXPECT_GT(ticks, 20u);
+  EXPECT_NE(svg.find("(effort unbounded: not plotted)"), std::string::npos);
+}
+
 // A Grashof double rocker (ground 100, input 80, coupler 40, output 90 mm: the coupler is the
 // shortest link). The input stops where coupler and output rocker are in line, |A O4| = 90 + 40
 // or 90 - 40 mm: with |A O4|^2 = 80^2 + 100^2 - 2 80 100 cos(theta2), theta2 = acos(-500/16000)

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -70,6 +71,54 @@ TEST(KinCoupler, CurvePointsEqualTheSweepsOutputs) {
     }
   }
   EXPECT_EQ(curves, 1u);
+}
+
+TEST(KinCoupler, DrawingHasRulersInMillimetres) {
+  if (std::system("/usr/bin/python3 -c 'import ezdxf' >/dev/null 2>&1") != 0) GTEST_SKIP() << "python3-ezdxf not installed";
+  // Every number on the rulers (layer "scale") stands at the tick for that many mm: a vertical
+  // tick at x = value on the bottom ruler, a horizontal one at y = value on the left; the ticks
+  // span the curve as the CSV gives it. The ground pivots O2 (0, 0) and O4 (100, 0) of
+  // examples/mechanisms/four_bar.yaml are inside the x ruler's range.
+  const fs::path dir = gearkit::testing::scratch_dir("kin-coupler-scale");
+  const std::string model = std::string(GEARKIT_SOURCE_DIR) + "/examples/mechanisms/four_bar.yaml";
+  const auto r = run_gearkit("kin " + shell_quote(model) + " --sweep 0:360:5 --coupler coupler.C --coupler-csv " +
+                             shell_quote((dir / "c.csv").string()) + " --coupler-dxf " + shell_quote((dir / "c.dxf").string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string cmd = "/usr/bin/python3 " + shell_quote(std::string(GEARKIT_SOURCE_DIR) + "/tests/gear/dxf_dump.py") + " " +
+                          shell_quote((dir / "c.dxf").string()) + " > " + shell_quote((dir / "c.json").string());
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const auto d = nlohmann::json::parse(gearkit::testing::slurp(dir / "c.json"));
+  const auto& lines = d["lines"]["scale"];
+  auto tick_at = [&](double v, bool vertical) {
+    for (const auto& l : lines) {
+      const double x1 = l[0], y1 = l[1], x2 = l[2], y2 = l[3];
+      if (vertical && x1 == x2 && std::abs(x1 - v) < 1e-9) return true;
+      if (!vertical && y1 == y2 && std::abs(y1 - v) < 1e-9 && std::abs(x2 - x1) < 5.0) return true;
+    }
+    return false;
+  };
+  double xlo = 1e300, xhi = -1e300, ylo = 1e300, yhi = -1e300;
+  int numbers = 0;
+  for (const auto& t : d["text_at"]["scale"]) {
+    const std::string text = t[0];
+    if (text.find("mm") != std::string::npos) continue;
+    const double v = std::stod(text), x = t[1], y = t[2];
+    ++numbers;
+    const bool below = y < 0.0 && std::abs(x + 0.62 * 0.5 * text.size() * d["text_height"]["scale"][0].get<double>() - v) < 1e-6;
+    if (below) xlo = std::min(xlo, v), xhi = std::max(xhi, v);
+    else ylo = std::min(ylo, v), yhi = std::max(yhi, v);
+    EXPECT_TRUE(tick_at(v, below)) << text;
+  }
+  EXPECT_GE(numbers, 8);
+  const auto rows = csv_rows(gearkit::testing::slurp(dir / "c.csv"));
+  for (const auto& row : rows) {
+    EXPECT_LE(xlo, row[1]);
+    EXPECT_GE(xhi, row[1]);
+    EXPECT_LE(ylo, row[2]);
+    EXPECT_GE(yhi, row[2]);
+  }
+  EXPECT_LE(xlo, 0.0);
+  EXPECT_GE(xhi, 100.0);
 }
 
 TEST(KinCoupler, BadPointNamesTheOptionAndTheLinkPoints) {

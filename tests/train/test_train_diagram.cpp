@@ -2,6 +2,7 @@
 // ezdxf (an independent reader): one gear bar per gear with its tooth count, as the example files
 // give them; every member named; the speed diagram's rays with the slopes of the speeds derived by
 // hand in the example files' comments (Willis' equation).
+#include "dxf_drawing.hpp"
 #include "run_gearkit.hpp"
 
 #include <gtest/gtest.h>
@@ -175,4 +176,36 @@ TEST(TrainDiagram, FixedAxisReducerHasNoSpeedDiagramAndIsCoaxial) {
   std::sort(axes.begin(), axes.end());
   axes.erase(std::unique(axes.begin(), axes.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), axes.end());
   EXPECT_EQ(axes.size(), 2u);  // input/output axis and the countershaft
+}
+
+namespace {
+
+// Whether segments a and b cross at a point inside both (orientation tests; touching ends do not).
+bool segments_cross(const nlohmann::json& a, const nlohmann::json& b) {
+  auto side = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  };
+  const double a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3];
+  const double d1 = side(a0, a1, a2, a3, b0, b1), d2 = side(a0, a1, a2, a3, b2, b3);
+  const double d3 = side(b0, b1, b2, b3, a0, a1), d4 = side(b0, b1, b2, b3, a2, a3);
+  return d1 * d2 < 0 && d3 * d4 < 0;
+}
+
+}  // namespace
+
+TEST(TrainDiagram, LabelsClearOfEachOtherAndOfLinesAndLeadersDoNotCross) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  // Every shipped train: no label box overlaps another or is crossed by a line (the audit saw the
+  // Ravigneaux set's planet pins through "zshort: z = 18"), and the speed diagram's leaders do not
+  // cross each other (they did, in a fan from the label column).
+  std::vector<std::string> names;
+  for (const auto& [name, spec] : kExamples) names.push_back(name);
+  names.push_back("ljubljana_planetary");
+  for (const std::string& name : names) {
+    const auto j = drawing_of(name);
+    EXPECT_EQ(gearkit::testing::layout_faults(gearkit::testing::drawing_from_dump(j)), "") << name;
+    const auto& leaders = j["lines"]["speed_labels"];
+    for (std::size_t a = 0; a < leaders.size(); ++a)
+      for (std::size_t b = a + 1; b < leaders.size(); ++b) EXPECT_FALSE(segments_cross(leaders[a], leaders[b])) << name << " " << a << " " << b;
+  }
 }

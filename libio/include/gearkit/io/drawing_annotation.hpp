@@ -8,7 +8,9 @@
 // character (a sans-serif or the CAD default font), which is what the layouts leave room for.
 #include <gearkit/io/drawing.hpp>
 
+#include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gearkit::io {
@@ -61,6 +63,40 @@ struct Box {
   double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
 };
 Box drawing_box(const Drawing& d);
+
+/// The box a text takes as the layouts estimate it: text_width() wide, from 0.25 h below the
+/// baseline (descenders) to h above it.
+Box text_box(const Text& t);
+
+/// Whether two boxes share any area (touching edges do not count).
+bool overlaps(const Box& a, const Box& b);
+
+/// Whether a curve of d (line, polyline with its bulge arcs, circle, arc) passes through box b.
+/// Arcs are followed by chords within 1e-3 of their radius: this is for layout, not geometry.
+bool crossed_by_curves(const Drawing& d, const Box& b);
+
+/// Label placement: whether the entities of `added` fit into d as they are: no text of `added`
+/// overlaps a text of d or is crossed by a curve of d (or of `added` itself, apart from the text's
+/// own leader line ending beside it), and no line of `added` runs through a text of d.
+bool fits(const Drawing& d, const Drawing& added);
+
+/// Appends every entity of `added` (not its layers) to d.
+void append(Drawing& d, const Drawing& added);
+
+/// The first of `candidates` that fits() into d, appended to it; the first candidate when none
+/// fits (a crowded drawing still gets its label). Returns the index of the candidate used.
+/// Requires at least one candidate.
+std::size_t place_first_fitting(Drawing& d, const std::vector<Drawing>& candidates);
+
+/// Layout checks for tests: index pairs (i < j) of d.texts whose boxes overlap, and the indices
+/// of the texts whose boxes a curve of d crosses.
+std::vector<std::pair<std::size_t, std::size_t>> overlapping_texts(const Drawing& d);
+std::vector<std::size_t> texts_crossed_by_curves(const Drawing& d);
+
+/// A rectangle on layer `layer` around everything drawn, `margin` mm outside drawing_box(): CAD
+/// programs that print "fit to page" (LibreCAD's dxf2pdf -a) fit the frame, so text whose font
+/// runs wider than text_width() estimates still lands on the page.
+void add_frame(Drawing& d, double margin, const std::string& layer);
 
 /// A text height that reads well next to a drawing whose largest extent is `size` mm (2.5 mm for
 /// small parts, up to 1/60 of the extent).

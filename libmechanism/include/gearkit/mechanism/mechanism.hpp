@@ -19,6 +19,9 @@ struct MechanismDriver {
   std::string name;
   kin::DriverQuantity quantity = kin::DriverQuantity::angle;
   std::optional<DriverRange> range;
+  /// The `speed:` the file gives [rad/s or m/s] (the solver then uses 1 when absent): the
+  /// animation's loop time when --speed is not given.
+  std::optional<double> speed;
 };
 
 struct Mechanism {
