@@ -55,17 +55,18 @@ void approach_start(const mechanism::Mechanism& mech, kin::Data& data, int drive
   data.inputs(driver) = drawn;
 }
 
-// The change points a sweep crossed, kept in the analysis with a note each.
+// The change points a sweep crossed, kept in the analysis with a note each (in the text report;
+// JSON has them in change_points[]). Notes, not warnings: the driver does move the mechanism on.
 void note_change_points(const mechanism::Mechanism& mech, int driver, const kin::SweepResult& s, KinAnalysis& a) {
   for (const kin::ChangePoint& c : s.change_points) {
     a.change_points.push_back(c);
     if (!c.bifurcation) {
-      a.warnings.push_back(fmt::format("singular position at input {:.6f} {} (the Jacobian loses rank, e.g. a triple "
+      a.notes.push_back(fmt::format("singular position at input {:.6f} {} (the Jacobian loses rank, e.g. a triple "
                                        "parallelogram lying flat): no other branch passes there; the sweep went on",
                                        shown_input(mech, driver, c.input), input_unit(mech, driver)));
       continue;
     }
-    a.warnings.push_back(fmt::format(
+    a.notes.push_back(fmt::format(
         "change point at input {:.6f} {}: two branches of the motion cross there (e.g. a parallelogram lying flat); "
         "{}{}", shown_input(mech, driver, c.input), input_unit(mech, driver),
         c.switched ? "the sweep went on along the other branch (--branch switch)"

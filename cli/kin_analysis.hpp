@@ -38,6 +38,7 @@ struct KinAnalysis {
   std::vector<kin::ChangePoint> change_points;  ///< crossed by the sweep, or on the way to --at
   std::vector<kin::OutputExtreme> extremes;
   std::vector<std::string> warnings;
+  std::vector<std::string> notes;  ///< change points crossed: not a problem, but worth saying
   std::vector<std::optional<Eigen::Vector2d>> instant_centres;  ///< per body, single position only
   bool single = false;
 };

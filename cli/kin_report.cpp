@@ -306,6 +306,7 @@ void instant_centres_section(const mechanism::Mechanism& mech, const KinAnalysis
 io::Report kin_report_tail(const mechanism::Mechanism& mech, const KinAnalysis& a) {
   io::Report rep;
   rep.warnings = a.warnings;
+  rep.notes = a.notes;
   dead_points_section(mech, a, rep);
   change_points_section(mech, a, rep);
   limit_positions_section(mech, a, rep);
