@@ -215,7 +215,7 @@ Start start_sweep(const Model& model, Data& data, const SweepOptions& options, P
   const bool converged = report.converged && !report.singular;
   if (converged) {
     first = Anchor{options.start, data.q, input_sensitivity(model, data, options.driver), data.qd, data.qdd,
-                   data.determinant_sign, data.rcond, data.rcond, {}};
+                   data.determinant_sign, data.rcond, data.rcond, false, {}};
     // Compared with the conditioning a sweep step further on (from the guess: the branch does
     // not matter for its order of magnitude), which grows linearly with the distance from a
     // change point: a start within a hundredth of the step of one is taken as on it.
