@@ -458,8 +458,8 @@ void central_member(io::Drawing& d, std::vector<Candidates>& labels, const gt::T
     // ... else at the foot of the arm, by its shaft's end (between other arms there may be no room).
     const double end = sh.side < 0 ? std::min(far, near) - 0.8 - w : std::max(far, near) + 0.8;
     for (Candidates more = grid("member_labels", {end, right, left}, {sh.lane_y - 0.4 * kText, sh.lane_y - 1.6 * kText, sh.lane_y + 0.6}, name);
-         auto& m : more)
-      c.push_back(std::move(m));
+         auto& candidate : more)
+      c.push_back(std::move(candidate));
     labels.push_back(std::move(c));
   } else {  // along its shaft between its gears, below or above it
     const double w = io::text_width(name, kText), mid = 0.5 * (sh.x_lo + sh.x_hi);
