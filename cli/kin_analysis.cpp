@@ -176,6 +176,7 @@ void describe_position(const mechanism::Mechanism& mech, const std::optional<kin
   }
   if (four_bar) p.transmission_angle = kin::transmission_angle(*four_bar, data);
   else p.transmission_angle.reset();
+  p.on_change_point = on_change_point;
   if (mech.model.has_loads()) {
     if (!p.forces) p.forces.emplace();
     if (on_change_point && have_dq) efforts_at_change_point(mech.model, data, driver, dq, *p.forces);

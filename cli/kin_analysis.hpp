@@ -25,6 +25,7 @@ struct KinPosition {
   /// and the value computed at the located input (about 1e15 N m) means nothing. Tables and JSON
   /// keep the row (docs/kin.md); the plot leaves it out.
   bool at_dead_point = false;
+  bool on_change_point = false;  ///< interpolated on a change point: Lagrange effort and reactions not given
 };
 
 /// What an analysis keeps. A sweep streams its positions (PositionSink) and keeps none here;

@@ -208,6 +208,10 @@ void KinRows::json(const KinPosition& p, io::JsonWriter& w) const {
     w.key(mu);
     w.value(*p.transmission_angle * kRadToDeg);
   }
+  if (p.on_change_point) {  // says why the Lagrange effort is null and the reactions are absent
+    w.key("on_change_point");
+    w.value(true);
+  }
   if (p.forces) forces_json(p, w);
   w.end_object();
 }

@@ -543,6 +543,10 @@ def null_path(node, path=""):
         # docs/rating.md: a life is null with life_unlimited: true (the stress below the knee).
         if v is None and isinstance(node, dict) and k in ("life_h", "life_H_h", "life_F_h") and node.get("life_unlimited") is True:
             continue
+        # docs/kin.md: on a change point the Lagrange effort is null (Phi_q singular, multipliers
+        # indeterminate) and the position says so.
+        if v is None and isinstance(node, dict) and k == "driving_torque_lagrange_Nm" and node.get("on_change_point") is True:
+            continue
         found = null_path(v, f"{path}.{k}" if isinstance(node, dict) else f"{path}[{k}]")
         if found:
             return found
@@ -578,6 +582,8 @@ def report_problem(argv, stdout):
         if flag in argv[:-1] and argv[argv.index(flag) + 1] != "-":
             to_stdout = False
     if not to_stdout:
+        return None, None
+    if "help" in argv[:1] or "--help" in argv or "-h" in argv:  # help is text, whatever --format says
         return None, None
     if "--example" in argv:  # kin --example writes a mechanism file, whatever --format says
         try:
