@@ -79,16 +79,20 @@ void note_change_points(const mechanism::Mechanism& mech, int driver, const kin:
 
 // Reaches `value` from the drawn input by continuation in 2 deg (2 mm) steps, so that the
 // position stays on the drawing's assembly branch (Newton from a distant guess may land on
-// another). @returns false with a warning in `a` when a dead point is in the way.
+// another). @returns false with a warning in `a` when a dead point is in the way. `reached`, when
+// given, receives the continuation's last sample (with velocities): the position itself when the
+// value lies on a change point, where Newton cannot solve it.
 bool continue_from_drawing(const mechanism::Mechanism& mech, kin::Data& data, int driver, double value, KinAnalysis& a,
-                           bool switch_branch = false) {
+                           bool switch_branch = false, kin::SweepSample* reached = nullptr) {
   const double drawn = data.inputs(driver);
   const double step = angular(mech, driver) ? 2.0 * std::numbers::pi / 180.0 : 0.002;
   if (std::abs(value - drawn) <= step) return true;
-  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, value, step, false, switch_branch));
+  const kin::SweepResult s =
+      kin::sweep(mech.model, data, sweep_options(driver, drawn, value, step, reached != nullptr, switch_branch));
   note_change_points(mech, driver, s, a);
   if (s.complete) {
     data.q = s.samples.back().q;
+    if (reached) *reached = s.samples.back();
     return true;
   }
   if (s.assembled) a.dead_points.push_back(s.dead_points.front());  // the limit in the way is a dead point too
@@ -194,7 +198,19 @@ KinAnalysis analyse_single(const mechanism::Mechanism& mech, kin::Data& data, in
   a.dof = dof;
   const kin::Model& m = mech.model;
   const double value = at ? *at : data.inputs(driver);
-  if (!continue_from_drawing(mech, data, driver, value, a, switch_branch)) return a;
+  kin::SweepSample reached;
+  if (!continue_from_drawing(mech, data, driver, value, a, switch_branch, &reached)) return a;
+  if (reached.on_change_point && reached.input == value && reached.qd.size() > 0) {
+    // On a change point: the continuation's interpolated sample is the position (Newton would
+    // stop within sqrt(tolerance) of it, on a singular Jacobian).
+    data.q = reached.q;
+    data.qd = reached.qd;
+    data.qdd = reached.qdd;
+    data.inputs(driver) = value;
+    describe_position(mech, kin::find_four_bar(m), data, driver, value, &reached.dq, a.positions.emplace_back(), true);
+    for (int b = 0; b < static_cast<int>(m.bodies().size()); ++b) a.instant_centres.push_back(kin::instant_centre(data.q, reached.dq, b));
+    return a;
+  }
   const kin::PositionReport r = kin::solve_at(m, data, driver, value);
   if (!r.converged || r.singular) {
     a.warnings.push_back(fmt::format("cannot analyse at input {}: {}", shown(mech, driver, value),

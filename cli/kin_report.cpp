@@ -273,6 +273,14 @@ void limit_positions_section(const mechanism::Mechanism& mech, const KinAnalysis
 
 void reactions_section(const mechanism::Mechanism& mech, const KinPosition& p, int driver, io::Report& rep) {
   const kin::Model& m = mech.model;
+  if (p.on_change_point) {  // Phi_q singular: no multipliers, no reactions, no free bodies
+    const bool ang = angular(mech, driver);
+    rep.notes.push_back(fmt::format("Driving {}: {:.4f} {} by virtual power along the branch followed (on a change point "
+                                    "the reactions are statically indeterminate and not given)",
+                                    ang ? "torque" : "force", p.forces->effort_virtual_power[static_cast<std::size_t>(driver)],
+                                    ang ? "N m" : "N"));
+    return;
+  }
   io::Table r{"Joint reactions (force on the first link of the joint)", {"joint", "kind", "on", "Fx [N]", "Fy [N]", "|F| [N]"}, {}};
   for (const kin::ConstraintReaction& c : p.forces->reactions)
     r.add_row({c.name, c.kind, m.body_name(c.body), io::fixed(c.force.x(), 3), io::fixed(c.force.y(), 3), io::fixed(c.force.norm(), 3)});

@@ -420,6 +420,14 @@ TEST(KinCommand, TheDrivingTorqueIsContinuousThroughAChangePoint) {
       EXPECT_TRUE(p["driving_torque_lagrange_Nm"].is_null() && p["reactions"].empty() && p["on_change_point"].get<bool>());
   }
   for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("non-finite"), std::string::npos) << w;
+
+  // --at on the change point itself: the position is the crossing's (all links on the ground
+  // line, rocker at 180 deg), with the same torque.
+  const auto at = run_json(shell_quote(write(scratch_dir("kin-weighted-parallelogram"), "p.yaml", yaml)) + " --at 180");
+  ASSERT_EQ(at["positions"].size(), 1u) << at["warnings"];
+  EXPECT_NEAR(at["positions"][0]["q"]["rocker.angle_deg"].get<double>(), 180.0, 1e-6);
+  EXPECT_NEAR(at["positions"][0]["driving_torque_Nm"].get<double>(), -9.81 * 0.040 * (0.1 / 2 + 0.3 + 0.2 / 2), 1e-9);
+  EXPECT_TRUE(at["positions"][0]["on_change_point"].get<bool>());
 }
 
 // The seed-004 pantograph's parallelogram O P R S lies flat where the coupler QP is square to
