@@ -387,7 +387,9 @@ class Reader {
     if (effort) effort_nodes_.push_back(d.node("effort"));
     d.finish();
     add(name, c, node);
-    mech_.model.set_driver(static_cast<int>(mech_.model.constraints().size()) - 1, md.quantity, md.range ? md.range->start : value);
+    // The drawn input: where the drawing is assembled and every continuation starts (a sweep
+    // reaches its range from there), so that the drawing picks the branch.
+    mech_.model.set_driver(static_cast<int>(mech_.model.constraints().size()) - 1, md.quantity, value);
     if (effort) mech_.model.set_driver_effort(static_cast<int>(mech_.model.drivers().size()) - 1, *effort);
     mech_.drivers.push_back(md);
   }

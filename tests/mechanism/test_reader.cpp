@@ -79,8 +79,10 @@ TEST(MechanismYaml, ReadsUnitsAndStructure) {
   kin::Data data(m.model);
   ASSERT_TRUE(kin::solve_position(m.model, data, 0.0).converged);
   EXPECT_EQ(kin::dof(m.model, data).gruebler, 1);
-  // Piston: 50 cos 0 + 200 = 250 mm at the range's start (crank angle 0).
-  EXPECT_NEAR(data.q(6), 0.250, 1e-12);
+  // The drawn input is the crank's drawn angle, 30 deg (not the range's start): the drawing is
+  // assembled there. Piston: 50 cos 30 + sqrt(200^2 - (50 sin 30)^2) = 241.7326 mm.
+  EXPECT_NEAR(m.model.drivers()[0].value, 30 * M_PI / 180, 1e-15);
+  EXPECT_NEAR(data.q(6), 0.050 * std::cos(M_PI / 6) + std::sqrt(0.2 * 0.2 - std::pow(0.05 * std::sin(M_PI / 6), 2)), 1e-12);
 }
 
 TEST(MechanismYaml, ErrorsNameFileLineAndColumn) {
