@@ -571,8 +571,9 @@ def stderr_problem(status, lines):
     return None
 
 
-def report_problem(argv, stdout):
-    """'json' or 'nonfinite' with a detail, or (None, None) for a sound report on stdout."""
+def report_problem(argv, stdout, model=None):
+    """'json' or 'nonfinite' with a detail, or (None, None) for a sound report on stdout. `model`:
+    the input file's bytes, whose own names ("name: -inf") the report may echo."""
     if len(stdout) > STDOUT_CHECKED:
         return None, None  # too long to parse here; the format tests check long reports
     text = stdout.decode("utf-8", "replace")
@@ -601,9 +602,11 @@ def report_problem(argv, stdout):
         if where and not warnings:
             return "nonfinite", f"JSON null with no warning at {where}"
         return None, None
-    if fmt in ("text", "md", "csv") and NONFINITE_TEXT.search(text):
+    echoed = NONFINITE_TEXT.findall(model.decode("utf-8", "replace")) if model else []
+    found = [m.group(0) for m in NONFINITE_TEXT.finditer(text) if m.group(1) not in echoed]
+    if fmt in ("text", "md", "csv") and found:
         if re.search(r"^Warnings: none$", text, re.MULTILINE) or "Warnings" not in text:
-            return "nonfinite", NONFINITE_TEXT.search(text).group(0)
+            return "nonfinite", found[0]
     return None, None
 
 
@@ -627,7 +630,7 @@ def classify(case, result, input_before, input_after, options):
     if input_before is not None and input_before != input_after:
         return "input", "the model file changed"
     if status in (0, 3):
-        kind, detail = report_problem(argv, stdout)
+        kind, detail = report_problem(argv, stdout, input_before)
         if kind:
             return kind, detail
     if seconds > options.slow:
