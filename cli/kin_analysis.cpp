@@ -55,6 +55,27 @@ void approach_start(const mechanism::Mechanism& mech, kin::Data& data, int drive
   data.inputs(driver) = drawn;
 }
 
+// The workspace a swept sample is analysed in (outputs, reactions): the sweep's own when it is
+// factorised there (SweepSample::data; nothing in describe_position refactorises it, except the
+// friction analysis, which gets the probe), else `probe` set to the sample, factorised when the
+// reactions need it.
+kin::Data& sample_workspace(const kin::Model& m, int driver, const kin::SweepSample& sample, kin::Data& probe) {
+  if (sample.data && m.frictions().empty()) return *sample.data;
+  probe.q = sample.q;
+  probe.inputs(driver) = sample.input;
+  if (sample.qd.size() == 0) {
+    kin::solve_at(m, probe, driver, sample.input);
+    return probe;
+  }
+  probe.qd = sample.qd;  // the sweep solved them: outputs need q, qd, qdd and dq only
+  probe.qdd = sample.qdd;
+  if (m.has_loads() && !sample.on_change_point) {  // the reactions need Phi_q factorised here (no Newton: solved)
+    kin::evaluate_constraints(m, probe, probe.t);
+    kin::factorize(m, probe);
+  }
+  return probe;
+}
+
 // The change points a sweep crossed, kept in the analysis with a note each (in the text report;
 // JSON has them in change_points[]). Notes, not warnings: the driver does move the mechanism on.
 void note_change_points(const mechanism::Mechanism& mech, int driver, const kin::SweepResult& s, KinAnalysis& a) {
@@ -233,39 +254,18 @@ KinAnalysis analyse_sweep(const mechanism::Mechanism& mech, kin::Data& data, int
   const kin::Model& m = mech.model;
   kin::SweepOptions o = sweep_options(driver, range.start, range.end, range.step, true, switch_branch);
   o.outputs = mech.outputs;
-  // Each sample is analysed further (reactions, outputs) in a Data of its own: the sweep's
-  // workspace carries its continuation state from one sample to the next.
+  // A sample the sweep's workspace is not factorised at is analysed in a Data of its own: that
+  // workspace carries the continuation state from one sample to the next (sample_workspace()).
   kin::Data probe(m);
   KinPosition p;
   const std::optional<kin::FourBar> four_bar = kin::find_four_bar(m);
   io::Progress progress("kin", static_cast<std::size_t>(kin::sweep_sample_count(o)));
   std::size_t done = 0;
   kin::SweepResult s;
-  const bool loads = m.has_loads();
-  const bool plain_loads = loads && m.frictions().empty();
   const auto visit = [&](const kin::SweepSample& sample) {
     progress.update(done++);
-    if (plain_loads && sample.data && !sample.on_change_point) {
-      // The sweep's workspace is factorised here: the reactions solve with it (no second
-      // factorisation per position); nothing below refactorises or moves it.
-      describe_position(mech, four_bar, *sample.data, driver, sample.input, &sample.dq, p);
-      p.at_dead_point = false;  // a sample with the sweep's factorisation is a regular one
-      sink(p);
-      return;
-    }
-    probe.q = sample.q;
-    probe.inputs(driver) = sample.input;
-    if (sample.qd.size() == 0) {
-      kin::solve_at(m, probe, driver, sample.input);
-    } else {
-      probe.qd = sample.qd;  // the sweep solved them: outputs need q, qd, qdd and dq only
-      probe.qdd = sample.qdd;
-      if (loads && !sample.on_change_point) {  // the reactions need Phi_q factorised here (no Newton: solved)
-        kin::evaluate_constraints(m, probe, probe.t);
-        kin::factorize(m, probe);
-      }
-    }
-    describe_position(mech, four_bar, probe, driver, sample.input, &sample.dq, p, sample.on_change_point);
+    kin::Data& at = sample_workspace(m, driver, sample, probe);
+    describe_position(mech, four_bar, at, driver, sample.input, &sample.dq, p, sample.on_change_point);
     // kin::sweep records a dead point before it visits the position there.
     p.at_dead_point = !s.dead_points.empty() && s.dead_points.back().input == sample.input;
     sink(p);

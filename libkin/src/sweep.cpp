@@ -350,8 +350,7 @@ class Continuation {
   /// The workspace holds the sample's factorisation and state (not after a change point or the
   /// location of an extreme), with the sample's velocities.
   bool factorised_at_sample() const {
-    return !interpolated_ && factorised_at_current_ && data_.factored && !data_.singular && options_.velocities &&
-           data_.q.size() == current_.q.size() && data_.qd.size() == current_.qd.size();
+    return !interpolated_ && factorised_at_current_ && data_.factored && !data_.singular && options_.velocities;
   }
 
   /// The sweep starts on a change point (start_beside_change_point()): tells whether another
@@ -454,10 +453,9 @@ class Continuation {
   // bisection on the sign of det(Phi_q) along their Hermite curve when it changes, else by
   // golden-section search for the least singular value (a redundant model's QR has no sign).
   double locate_singular_point(const Anchor& a, const Anchor& b) {
-    Eigen::VectorXd q, dq;
+    Eigen::VectorXd dq;  // unused: hermite() gives it with q
     const auto factorised_at = [&](double input) {
-      hermite(a, b, input, q, dq);
-      data_.q = q;
+      hermite(a, b, input, data_.q, dq);
       data_.inputs(options_.driver) = input;
       evaluate_constraints(model_, data_, data_.t);
       factorize(model_, data_);
