@@ -8,12 +8,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <system_error>
 
 namespace gearkit::cli {
 
 namespace {
 
 constexpr long kAnimationFrames = 240;  // the browser interpolates between them
+constexpr long kPipelinedSweep = 1000;  // positions from which rows are written on a second thread
 
 // The report is rendered whole for an HTML page, and for a CSV of a table other than the
 // positions (those come at the end of a sweep).
@@ -48,6 +50,15 @@ void KinWriter::plan(double first, double last, long count) {
   stride_ = std::max(1L, (count + kAnimationFrames - 1) / kAnimationFrames);
   if (r_.plot) plot_.emplace(mech_, r_.driver, shown_input(mech_, r_.driver, first), shown_input(mech_, r_.driver, last), count);
   if (coupler_points_) coupler_.emplace(*coupler_points_, count);
+  // A long streamed sweep writes its rows on a second thread (kin_row_pipeline.hpp); a short one
+  // is not worth the thread's start. Where no thread can be had (address-space limit), the rows
+  // are written here as before.
+  if (whole_ || count < kPipelinedSweep) return;
+  try {
+    rows_thread_.emplace([this](const KinPosition& p) { write_row(p); });
+  } catch (const std::system_error&) {
+    rows_thread_.reset();
+  }
 }
 
 void KinWriter::begin(const KinPosition* first) {
@@ -82,7 +93,10 @@ void KinWriter::write_row(const KinPosition& p) {
 
 void KinWriter::add(const KinPosition& p) {
   if (!begun_) begin(&p);
-  write_row(p);
+  if (rows_thread_)
+    rows_thread_->push(p);
+  else
+    write_row(p);
   if (plot_) plot_->add(p);
   if (coupler_) coupler_->add(p);
   if (!r_.animate) return;
@@ -152,6 +166,7 @@ int KinWriter::finish_whole(io::Report tail) {
 }
 
 int KinWriter::finish(const KinAnalysis& a) {
+  if (rows_thread_) rows_thread_->finish();
   if (!begun_) begin(nullptr);
   io::Report tail = tail_of(a);
   fill_pictures(a, tail);

@@ -6,6 +6,7 @@
 #include "kin_coupler.hpp"
 #include "kin_plot.hpp"
 #include "kin_report.hpp"
+#include "kin_row_pipeline.hpp"
 
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/output.hpp>
@@ -74,6 +75,7 @@ class KinWriter {
   std::vector<KinPosition> frames_;
   std::optional<KinPosition> last_;
   long stride_ = 1, seen_ = 0;
+  std::optional<RowPipeline> rows_thread_;  // last: stopped before the stream it writes to goes
 };
 
 }  // namespace gearkit::cli
