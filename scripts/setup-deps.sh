@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev
   libsuitesparse-dev
   libboost-dev libboost-program-options-dev libboost-filesystem-dev
-  libyaml-cpp-dev nlohmann-json3-dev libfmt-dev
+  libyaml-cpp-dev libyaml-dev nlohmann-json3-dev libfmt-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-ezdxf python3-yaml

@@ -1,11 +1,11 @@
 #include <gearkit/io/yaml_model.hpp>
+#include "yaml_parse.hpp"
 
 #include <cctype>
 
 #include <gearkit/io/output.hpp>
 
 #include <fmt/format.h>
-#include <yaml-cpp/depthguard.h>
 
 #include <cerrno>
 #include <charconv>
@@ -71,17 +71,7 @@ YamlDocument parse_checked(const std::string& text, const std::string& name) {
   if (!valid_utf8(text, bad))
     fail_at(mark_of_offset(text, bad, name), "expected a YAML text file (UTF-8), found binary data");
   YamlDocument doc{name, {}};
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::DeepRecursion& e) {
-    fail_at({name, e.mark.line + 1, e.mark.column + 1},
-            fmt::format("expected YAML nested at most {} levels deep, found deeper nesting", e.depth()));
-  } catch (const YAML::ParserException& e) {
-    fail_at({name, e.mark.line + 1, e.mark.column + 1}, fmt::format("malformed YAML: {}", e.msg));
-  } catch (const YAML::Exception& e) {
-    fail_at({name, e.mark.line + 1, e.mark.column + 1}, fmt::format("malformed YAML: {}", e.msg));
-  }
+  const std::vector<YAML::Node> documents = parse_yaml_documents(text, name);
   if (!documents.empty()) doc.root = documents.front();
   for (std::size_t i = 1; i < documents.size(); ++i)
     if (documents[i].IsDefined() && !documents[i].IsNull())

@@ -105,9 +105,46 @@ TEST(YamlModel, DuplicateKeysAreErrors) {
 }
 
 TEST(YamlModel, MalformedYamlGivesParserPosition) {
+  // The unclosed flow sequence opened at line 1, column 4 is found wanting at line 2, column 2
+  // (libyaml's problem and context marks).
   std::string msg = error_of([] { load_yaml_text("a: [1, 2\nb: 3\n", "bad.yaml"); });
-  EXPECT_NE(msg.find("bad.yaml:"), std::string::npos);
-  EXPECT_NE(msg.find("malformed YAML"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("bad.yaml:2:2: malformed YAML: did not find expected ',' or ']'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("flow sequence at line 1, column 4"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  // An unterminated quoted scalar is an error, not a value running to the end of the file.
+  msg = error_of([] { load_yaml_text("a: \"unterminated\n", "quote.yaml"); });
+  EXPECT_NE(msg.find("quote.yaml:2:1: malformed YAML"), std::string::npos) << msg;
+  EXPECT_NE(error_of([] { load_yaml_text("a: *nowhere\n", "alias.yaml"); }).find("alias.yaml:1:4: malformed YAML"),
+            std::string::npos);
+}
+
+TEST(YamlModel, NodesFollowTheYamlRulesTheReadersExpect) {
+  // YAML 1.1 (yaml.org/type/null.html): ~, null, Null, NULL and nothing are null when plain;
+  // quoted they are strings. Block scalars keep their line breaks (YAML 1.2 section 8.1).
+  const auto doc = load_yaml_text(
+      "a: ~\nb: null\nc:\nd: \"null\"\ne: 'NULL'\nf: |\n  two\n  lines\ng: &pair [1, 2]\nh: *pair\n"
+      "gear:\n  z: 12\n",
+      "m.yaml");
+  for (const char* key : {"a", "b", "c"}) EXPECT_TRUE(doc.root[key].IsNull()) << key;
+  EXPECT_EQ(doc.root["d"].as<std::string>(), "null");
+  EXPECT_EQ(doc.root["e"].as<std::string>(), "NULL");
+  EXPECT_EQ(doc.root["f"].as<std::string>(), "two\nlines\n");
+  ASSERT_TRUE(doc.root["h"].IsSequence());
+  EXPECT_EQ(doc.root["h"].size(), 2u);
+  EXPECT_EQ(doc.root["h"][1].as<int>(), 2);  // an alias is its anchor's node
+  // Marks are the node's first character, 1-based as editors show them: "12" at line 12, column 6.
+  const gearkit::io::SourceMark m = gearkit::io::mark_of(doc.root["gear"]["z"], doc.file);
+  EXPECT_EQ(m.line, 12);
+  EXPECT_EQ(m.column, 6);
+  EXPECT_EQ(gearkit::io::mark_of(doc.root["gear"], doc.file).line, 12);  // a block mapping starts at its first key
+}
+
+TEST(YamlModel, NestingIsLimitedTo500Levels) {
+  // docs/cli.md, Limits: 500 levels of collections are read, the 501st is refused where it opens.
+  const auto nested = [](int levels) { return "a: " + std::string(levels - 1, '[') + std::string(levels - 1, ']') + "\n"; };
+  EXPECT_EQ(error_of([&] { load_yaml_text(nested(500), "ok.yaml"); }), "");
+  const std::string msg = error_of([&] { load_yaml_text(nested(501), "deep.yaml"); });
+  EXPECT_NE(msg.find("deep.yaml:1:503: expected YAML nested at most 500 levels deep"), std::string::npos) << msg;
 }
 
 TEST(YamlModel, FileProblemsAreOneLineErrors) {
@@ -137,7 +174,7 @@ TEST(YamlModel, FileProblemsAreOneLineErrors) {
 }
 
 TEST(YamlModel, DeeplyNestedSequencesAreRefusedNotCrashing) {
-  // 10 MB of nested flow sequences: must end in an error (yaml-cpp's depth guard), not a stack overflow.
+  // 10 MB of nested flow sequences: must end in an error (the depth limit), not a stack overflow.
   std::string text(5u << 20, '[');
   text += std::string(5u << 20, ']');
   std::string msg = error_of([&] { load_yaml_text(text, "deep.yaml"); });
