@@ -220,6 +220,75 @@ std::string gear_elements(const kin::Model& model, const std::vector<const KinPo
   return svg;
 }
 
+namespace {
+
+// The world point `world` [m] in the frame of `body` at q.
+Eigen::Vector2d local_of(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& world) {
+  return kin::rotate(-angle_of(q, body), world - at(q, body, Eigen::Vector2d::Zero()));
+}
+
+std::string body_name(const kin::Model& model, int body) {
+  return body == kin::kGround ? std::string("ground") : model.bodies()[static_cast<std::size_t>(body)].name;
+}
+
+// The arm's end: its point farthest from the axis (local `axis`), and that distance [m].
+std::pair<Eigen::Vector2d, double> arm_reach(const kin::Model& model, int arm, const Eigen::Vector2d& axis) {
+  std::pair<Eigen::Vector2d, double> out{axis, 0.0};
+  const auto& points = arm == kin::kGround ? model.ground().points : model.bodies()[static_cast<std::size_t>(arm)].points;
+  for (const auto& [name, local] : points)
+    if ((local - axis).norm() > out.second) out = {local, (local - axis).norm()};
+  return out;
+}
+
+}  // namespace
+
+std::vector<TrainPicture> train_pictures(const kin::Model& model, const std::vector<const KinPosition*>& frames) {
+  std::vector<TrainPicture> out;
+  for (const auto& mc : model.constraints()) {
+    const kin::ConstraintDrawing d = mc.constraint->drawing();
+    if (d.central.size() < 2 || frames.empty()) continue;
+    std::optional<kin::BodyPoint> axis;  // the input's pivot, else another member's
+    for (const auto& w : d.central) axis = axis ? axis : pivot_of(model, w.body);
+    if (!axis && d.arm) axis = pivot_of(model, *d.arm);
+    if (!axis) continue;
+    const Eigen::VectorXd& q = frames.front()->q;
+    const Eigen::Vector2d o = at(q, axis->body, axis->local);
+    const int arm = d.arm.value_or(kin::kGround);
+    TrainPicture t{mc.name, {}, {arm, local_of(q, arm, o)}, {}};
+    auto [end, reach] = arm_reach(model, arm, t.arm_axis.local);
+    if (!(reach > 1e-9)) {  // an arm with no point off the axis: a reach from the model's size
+      for (std::size_t b = 0; b < model.bodies().size(); ++b)
+        for (const auto& [name, local] : model.bodies()[b].points) reach = std::max(reach, 0.3 * (at(q, static_cast<int>(b), local) - o).norm());
+      reach = reach > 1e-9 ? reach : 0.05;
+      end = t.arm_axis.local + Eigen::Vector2d(reach, 0.0);
+    }
+    t.arm_end = {arm, end};
+    int z_min = d.central.front().teeth, z_max = z_min;
+    for (const auto& w : d.central) z_min = std::min(z_min, w.teeth), z_max = std::max(z_max, w.teeth);
+    const double per_tooth = 2.0 * reach / (z_min + z_max);  // notional: the arm's end midway between the circles
+    for (const auto& w : d.central)
+      t.central.push_back({{w.body, local_of(q, w.body, o)}, per_tooth * w.teeth, body_name(model, w.body)});
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+std::string train_elements(const std::vector<TrainPicture>& trains, const std::vector<const KinPosition*>& frames,
+                           const AnimationCanvas& c, double duration) {
+  std::string svg;
+  for (const TrainPicture& t : trains) {
+    for (const GearCircle& g : t.central) svg += gear_svg(frames, c, g.axis, g.r, duration, g.name);
+    std::vector<std::string> d;
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d a = at(f->q, t.arm_axis.body, t.arm_axis.local), b = at(f->q, t.arm_end.body, t.arm_end.local);
+      d.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(a.x()), c.Y(a.y()), c.X(b.x()), c.Y(b.y())));
+    }
+    svg += fmt::format("<path d=\"{}\" stroke=\"#b06000\" stroke-width=\"{:.3f}\" stroke-linecap=\"round\"><title>arm {}</title>{}</path>\n",
+                       d.front(), 1.6 * c.stroke, io::xml_escape(t.name), animate("d", d, duration));
+  }
+  return svg;
+}
+
 std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                         double duration) {
   std::string svg;
