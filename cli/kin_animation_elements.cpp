@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -289,6 +290,69 @@ std::string train_elements(const std::vector<TrainPicture>& trains, const std::v
   return svg;
 }
 
+namespace {
+
+// A text's or symbol's box in SVG units (y down).
+struct Box {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// A text of `chars` characters at (x, y) (start, baseline), `size` high, `em` wide a character.
+Box text_box(double x, double y, double size, std::size_t chars, double em) {
+  return {x, y - size, x + em * size * static_cast<double>(chars), y + 0.25 * size};
+}
+
+// What a link's name must keep clear of in one frame: the joints' circles, the ground pivots'
+// triangles and the points' names (as name_labels and the animation draw them).
+std::vector<Box> label_obstacles(const kin::Model& model, const Eigen::VectorXd& q, const AnimationCanvas& c) {
+  const double s = c.stroke, size = 4.5 * s;
+  std::vector<Box> out;
+  for (const auto& [name, p] : model.ground().points)
+    out.push_back({c.X(p.x()) - 3 * s, c.Y(p.y()) - 1.2 * s, c.X(p.x()) + 3 * s, c.Y(p.y()) + 5.1 * s});
+  for (std::size_t b = 0; b < model.bodies().size(); ++b)
+    for (const auto& [name, local] : model.bodies()[b].points) {
+      const Eigen::Vector2d p = at(q, static_cast<int>(b), local);
+      out.push_back({c.X(p.x()) - 1.8 * s, c.Y(p.y()) - 1.8 * s, c.X(p.x()) + 1.8 * s, c.Y(p.y()) + 1.8 * s});
+      out.push_back(text_box(c.X(p.x()) + 2 * s, c.Y(p.y()) - 2 * s, size, name.size(), 0.62));
+    }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> link_label_positions(const kin::Model& model, const Eigen::VectorXd& q, const AnimationCanvas& c,
+                                                  std::vector<std::size_t>& choice) {
+  const double s = c.stroke, size = 1.2 * 4.5 * s;
+  std::vector<Box> taken = label_obstacles(model, q, c);
+  std::vector<Eigen::Vector2d> out(model.bodies().size(), Eigen::Vector2d::Zero());
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const kin::Body& body = model.bodies()[b];
+    if (body.points.empty()) continue;
+    // Anchors: the middle of the link's points, then halfway from it to each point.
+    std::vector<Eigen::Vector2d> anchors{Eigen::Vector2d::Zero()};
+    for (const auto& [name, local] : body.points) anchors.front() += at(q, static_cast<int>(b), local);
+    anchors.front() /= static_cast<double>(body.points.size());
+    for (const auto& [name, local] : body.points) anchors.push_back(0.5 * (anchors.front() + at(q, static_cast<int>(b), local)));
+    const double w = 0.72 * size * static_cast<double>(body.name.size());
+    std::vector<Eigen::Vector2d> candidates;  // below right, above right, below left, above left
+    for (const Eigen::Vector2d& a : anchors)
+      for (const auto& [dx, dy] : {std::pair{s, 6 * s}, {s, -3 * s}, {-s - w, 6 * s}, {-s - w, -3 * s}})
+        candidates.emplace_back(c.X(a.x()) + dx, c.Y(a.y()) + dy);
+    auto clear = [&](std::size_t k) {
+      const Box box = text_box(candidates[k].x(), candidates[k].y(), size, body.name.size(), 0.72);
+      return std::none_of(taken.begin(), taken.end(), [&](const Box& o) { return box.meets(o); });
+    };
+    std::size_t k = choice[b] < candidates.size() && clear(choice[b]) ? choice[b] : 0;  // the last frame's, if still clear
+    while (k < candidates.size() && !clear(k)) ++k;
+    if (k == candidates.size()) k = 0;  // crowded: the first
+    choice[b] = k;
+    out[b] = candidates[k];
+    taken.push_back(text_box(out[b].x(), out[b].y(), size, body.name.size(), 0.72));
+  }
+  return out;
+}
+
 std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                         double duration) {
   std::string svg;
@@ -301,16 +365,16 @@ std::string name_labels(const kin::Model& model, const std::vector<const KinPosi
     svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n", c.X(p.x()) + 2 * c.stroke,
                        c.Y(p.y()) + 6 * c.stroke, size, io::xml_escape(name));
   }
+  std::vector<std::vector<Eigen::Vector2d>> at_frame;  // per frame, each link's name position
+  std::vector<std::size_t> choice(model.bodies().size(), 0);
+  for (const KinPosition* f : frames) at_frame.push_back(link_label_positions(model, f->q, c, choice));
   for (std::size_t b = 0; b < model.bodies().size() && !frames.empty(); ++b) {
     const kin::Body& body = model.bodies()[b];
     if (body.points.empty()) continue;
     std::vector<std::string> lx, ly;
-    for (const KinPosition* f : frames) {
-      Eigen::Vector2d mid = Eigen::Vector2d::Zero();
-      for (const auto& [name, local] : body.points) mid += at(f->q, static_cast<int>(b), local);
-      mid /= static_cast<double>(body.points.size());
-      lx.push_back(fmt::format("{:.3f}", c.X(mid.x()) + c.stroke));
-      ly.push_back(fmt::format("{:.3f}", c.Y(mid.y()) + 6 * c.stroke));
+    for (const auto& p : at_frame) {
+      lx.push_back(fmt::format("{:.3f}", p[b].x()));
+      ly.push_back(fmt::format("{:.3f}", p[b].y()));
     }
     svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" font-weight=\"bold\">{}{}{}</text>\n", lx.front(), ly.front(),
                        1.2 * size, io::xml_escape(body.name), animate("x", lx, duration), animate("y", ly, duration));

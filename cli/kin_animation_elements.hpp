@@ -95,6 +95,14 @@ std::string train_elements(const std::vector<TrainPicture>& trains, const std::v
 std::string spring_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                             double duration);
 
+/// Where each link's name goes in one frame (text start and baseline, SVG units; zero for a link
+/// with no point): the first candidate about the link's middle (below right of it, above right,
+/// below left, above left; then about the points halfway to each point) whose box meets no joint
+/// circle, ground pivot, point name or link name placed before; `choice` (one per link) keeps
+/// the previous frame's candidate while it stays clear, so names do not jump between frames.
+std::vector<Eigen::Vector2d> link_label_positions(const kin::Model& model, const Eigen::VectorXd& q, const AnimationCanvas& c,
+                                                  std::vector<std::size_t>& choice);
+
 /// Link names at the middle of their points and point names beside them, moving with the links.
 std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                         double duration);

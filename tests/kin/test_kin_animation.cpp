@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -362,4 +363,48 @@ TEST(KinAnimation, EpicyclicTrainMembersTurnAtWillisSpeeds) {
                   std::stod(attribute_before(fixed_arm, "pitch circle ring", "r")),
               30.0 / 90.0, 1e-4);
   EXPECT_NEAR(turned(fixed_arm, "tooth mark ring") / turned(fixed_arm, "tooth mark sun"), -1.0 / 3.0, 1e-4);
+}
+
+namespace {
+
+std::vector<double> values_after(const std::string& svg, std::size_t from, const std::string& attribute) {
+  const std::size_t at = svg.find("attributeName=\"" + attribute + "\"", from);
+  const std::size_t v = svg.find("values=\"", at) + 8;
+  std::vector<double> out;
+  std::istringstream in(svg.substr(v, svg.find('"', v) - v));
+  for (std::string x; std::getline(in, x, ';');) out.push_back(std::stod(x));
+  return out;
+}
+
+}  // namespace
+
+TEST(KinAnimation, LinkNamesKeepClearOfJointsAndPivots) {
+  // parallelogram.yaml lies flat at 0 and 180 deg: the rod's name, below the middle of A B, lay on
+  // the pivot O4's triangle. In every frame the name's box (bold, about 0.72 of the font size a
+  // character, from the font size above the baseline to a quarter below) must miss every joint
+  // circle and every ground triangle as the SVG draws them.
+  const std::string svg = animate("parallelogram.yaml", "");
+  const std::size_t label = svg.find("font-weight=\"bold\">rod<animate");
+  ASSERT_NE(label, std::string::npos);
+  const double size = std::stod(svg.substr(svg.rfind("font-size=\"", label) + 11));
+  const std::vector<double> x = values_after(svg, label, "x"), y = values_after(svg, label, "y");
+  ASSERT_EQ(x.size(), 73u);  // 0 to 360 deg by 5 deg
+  std::vector<std::array<double, 4>> fixed;  // the ground triangles' boxes
+  for (const char* pivot : {"ground.O2", "ground.O4"}) {
+    const std::size_t t = svg.find(std::string("<title>") + pivot + "</title>");
+    const std::size_t p = svg.rfind("points=\"", t) + 8;
+    const auto pts = points_of(svg.substr(p, svg.find('"', p) - p));
+    fixed.push_back({pts[1].first, pts[0].second, pts[2].first, pts[1].second});
+  }
+  for (std::size_t f = 0; f < x.size(); ++f) {
+    const double x0 = x[f], x1 = x[f] + 0.72 * size * 3, y0 = y[f] - size, y1 = y[f] + 0.25 * size;
+    for (const auto& b : fixed) EXPECT_FALSE(x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1) << "frame " << f;
+    for (const char* joint : {"crank.O2", "crank.A", "rod.A", "rod.B", "rocker.O4", "rocker.B"}) {
+      const std::size_t t = svg.find(std::string("<title>") + joint + "</title>");
+      ASSERT_NE(t, std::string::npos) << joint;
+      const double r = std::stod(svg.substr(svg.rfind(" r=\"", t) + 4));
+      const double cx = values_after(svg, t, "cx")[f], cy = values_after(svg, t, "cy")[f];
+      EXPECT_FALSE(x0 < cx + r && cx - r < x1 && y0 < cy + r && cy - r < y1) << "frame " << f << " " << joint;
+    }
+  }
 }
