@@ -32,7 +32,9 @@ std::vector<const KinPosition*> select_frames(const KinAnalysis& analysis) {
 
 // The viewport over every frame's points (mm), with a margin for slider guides and names;
 // `w`, `h`: its size in SVG units.
-AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPosition*>& frames, double& w, double& h) {
+// `discs`: circles about moving points (a pitch circle, a cam) that reach beyond the links' points.
+AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPosition*>& frames,
+                          const std::vector<std::pair<kin::BodyPoint, double>>& discs, double& w, double& h) {
   double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
   auto grow = [&](const Eigen::Vector2d& p) {
     x0 = std::min(x0, p.x());
@@ -44,11 +46,11 @@ AnimationCanvas canvas_of(const kin::Model& m, const std::vector<const KinPositi
   for (const KinPosition* f : frames)
     for (std::size_t b = 0; b < m.bodies().size(); ++b)
       for (const auto& [name, local] : m.bodies()[b].points) grow(point_at(f->q, static_cast<int>(b), local));
-  for (const GearCircle& g : gear_circles(m, frames))  // pitch circles reach beyond the links' points
+  for (const auto& [centre, r] : discs)
     for (const KinPosition* f : frames) {
-      const Eigen::Vector2d o = point_at(f->q, g.axis.body, g.axis.local);
-      grow(o - Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
-      grow(o + Eigen::Vector2d(1.12 * g.r, 1.12 * g.r));
+      const Eigen::Vector2d o = point_at(f->q, centre.body, centre.local);
+      grow(o - Eigen::Vector2d(r, r));
+      grow(o + Eigen::Vector2d(r, r));
     }
   if (x0 > x1) x0 = x1 = y0 = y1 = 0.0;
   // A link's name starts at the middle of its points and runs right (name_labels: bold, 5.4
@@ -120,8 +122,15 @@ std::string body_svg(const kin::Model& m, std::size_t b, const std::vector<const
 std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& analysis, std::optional<double> input_speed) {
   const kin::Model& m = mech.model;
   const std::vector<const KinPosition*> frames = select_frames(analysis);
+  const std::vector<CamPicture> cams = cam_pictures(m, analysis.positions);
+  const std::vector<TrainPicture> trains = train_pictures(m, frames);
+  std::vector<std::pair<kin::BodyPoint, double>> discs;
+  for (const GearCircle& g : gear_circles(m, frames)) discs.emplace_back(g.axis, 1.12 * g.r);
+  for (const TrainPicture& t : trains)
+    for (const GearCircle& g : t.central) discs.emplace_back(g.axis, 1.12 * g.r);
+  for (const CamPicture& c : cams) discs.emplace_back(kin::BodyPoint{c.drawing.cam, Eigen::Vector2d::Zero()}, c.reach + c.drawing.roller_radius);
   double w = 0, h = 0;
-  const AnimationCanvas canvas = canvas_of(m, frames, w, h);
+  const AnimationCanvas canvas = canvas_of(m, frames, discs, w, h);
   const double stroke = canvas.stroke;
   std::string loop_text;
   const double duration =
@@ -133,7 +142,8 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
       "<title>{}</title>\n<desc>{}</desc>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       w, h, 800.0 * h / w, io::xml_escape(mech.title), io::xml_escape(loop_text));
   svg += output_traces(mech, analysis, canvas) + slider_elements(m, frames, canvas, duration) +
-         spring_elements(m, frames, canvas, duration) + gear_elements(m, frames, canvas, duration);
+         spring_elements(m, frames, canvas, duration) + gear_elements(m, frames, canvas, duration) +
+         train_elements(trains, frames, canvas, duration) + cam_elements(cams, frames, canvas, duration);
   for (const auto& [name, p] : m.ground().points) {
     const double s = 3 * stroke, x = canvas.X(p.x()), y = canvas.Y(p.y());
     svg += fmt::format("<polygon points=\"{:.3f},{:.3f} {:.3f},{:.3f} {:.3f},{:.3f}\" fill=\"#888\"><title>ground.{}</title></polygon>\n",
@@ -141,8 +151,13 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
   }
   for (std::size_t b = 0; b < m.bodies().size(); ++b) svg += body_svg(m, b, frames, canvas, duration);
   svg += name_labels(m, frames, canvas, duration);
-  svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n",
-                     2 * stroke, h - 2 * stroke, 4.5 * stroke, io::xml_escape(loop_text));
+  std::vector<std::string> notes{loop_text};
+  if (const std::string cam = cam_notes(cams); !cam.empty()) notes.push_back(cam);
+  for (const TrainPicture& t : trains) notes.push_back(fmt::format("train ({}): pitch circles to a notional scale (no module)", t.name));
+  for (std::size_t i = 0; i < notes.size(); ++i)
+    svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n",
+                       2 * stroke, h - 2 * stroke - 5.5 * stroke * static_cast<double>(notes.size() - 1 - i), 4.5 * stroke,
+                       io::xml_escape(notes[i]));
   svg += "</svg>\n";
   return svg;
 }

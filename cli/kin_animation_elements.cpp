@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -220,6 +221,138 @@ std::string gear_elements(const kin::Model& model, const std::vector<const KinPo
   return svg;
 }
 
+namespace {
+
+// The world point `world` [m] in the frame of `body` at q.
+Eigen::Vector2d local_of(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& world) {
+  return kin::rotate(-angle_of(q, body), world - at(q, body, Eigen::Vector2d::Zero()));
+}
+
+std::string body_name(const kin::Model& model, int body) {
+  return body == kin::kGround ? std::string("ground") : model.bodies()[static_cast<std::size_t>(body)].name;
+}
+
+// The arm's end: its point farthest from the axis (local `axis`), and that distance [m].
+std::pair<Eigen::Vector2d, double> arm_reach(const kin::Model& model, int arm, const Eigen::Vector2d& axis) {
+  std::pair<Eigen::Vector2d, double> out{axis, 0.0};
+  const auto& points = arm == kin::kGround ? model.ground().points : model.bodies()[static_cast<std::size_t>(arm)].points;
+  for (const auto& [name, local] : points)
+    if ((local - axis).norm() > out.second) out = {local, (local - axis).norm()};
+  return out;
+}
+
+}  // namespace
+
+std::vector<TrainPicture> train_pictures(const kin::Model& model, const std::vector<const KinPosition*>& frames) {
+  std::vector<TrainPicture> out;
+  for (const auto& mc : model.constraints()) {
+    const kin::ConstraintDrawing d = mc.constraint->drawing();
+    if (d.central.size() < 2 || frames.empty()) continue;
+    std::optional<kin::BodyPoint> axis;  // the input's pivot, else another member's
+    for (const auto& w : d.central) axis = axis ? axis : pivot_of(model, w.body);
+    if (!axis && d.arm) axis = pivot_of(model, *d.arm);
+    if (!axis) continue;
+    const Eigen::VectorXd& q = frames.front()->q;
+    const Eigen::Vector2d o = at(q, axis->body, axis->local);
+    const int arm = d.arm.value_or(kin::kGround);
+    TrainPicture t{mc.name, {}, {arm, local_of(q, arm, o)}, {}};
+    auto [end, reach] = arm_reach(model, arm, t.arm_axis.local);
+    if (!(reach > 1e-9)) {  // an arm with no point off the axis: a reach from the model's size
+      for (std::size_t b = 0; b < model.bodies().size(); ++b)
+        for (const auto& [name, local] : model.bodies()[b].points) reach = std::max(reach, 0.3 * (at(q, static_cast<int>(b), local) - o).norm());
+      reach = reach > 1e-9 ? reach : 0.05;
+      end = t.arm_axis.local + Eigen::Vector2d(reach, 0.0);
+    }
+    t.arm_end = {arm, end};
+    int z_min = d.central.front().teeth, z_max = z_min;
+    for (const auto& w : d.central) z_min = std::min(z_min, w.teeth), z_max = std::max(z_max, w.teeth);
+    const double per_tooth = 2.0 * reach / (z_min + z_max);  // notional: the arm's end midway between the circles
+    for (const auto& w : d.central)
+      t.central.push_back({{w.body, local_of(q, w.body, o)}, per_tooth * w.teeth, body_name(model, w.body)});
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+std::string train_elements(const std::vector<TrainPicture>& trains, const std::vector<const KinPosition*>& frames,
+                           const AnimationCanvas& c, double duration) {
+  std::string svg;
+  for (const TrainPicture& t : trains) {
+    for (const GearCircle& g : t.central) svg += gear_svg(frames, c, g.axis, g.r, duration, g.name);
+    std::vector<std::string> d;
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d a = at(f->q, t.arm_axis.body, t.arm_axis.local), b = at(f->q, t.arm_end.body, t.arm_end.local);
+      d.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(a.x()), c.Y(a.y()), c.X(b.x()), c.Y(b.y())));
+    }
+    svg += fmt::format("<path d=\"{}\" stroke=\"#b06000\" stroke-width=\"{:.3f}\" stroke-linecap=\"round\"><title>arm {}</title>{}</path>\n",
+                       d.front(), 1.6 * c.stroke, io::xml_escape(t.name), animate("d", d, duration));
+  }
+  return svg;
+}
+
+namespace {
+
+// A text's or symbol's box in SVG units (y down).
+struct Box {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool meets(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// A text of `chars` characters at (x, y) (start, baseline), `size` high, `em` wide a character.
+Box text_box(double x, double y, double size, std::size_t chars, double em) {
+  return {x, y - size, x + em * size * static_cast<double>(chars), y + 0.25 * size};
+}
+
+// What a link's name must keep clear of in one frame: the joints' circles, the ground pivots'
+// triangles and the points' names (as name_labels and the animation draw them).
+std::vector<Box> label_obstacles(const kin::Model& model, const Eigen::VectorXd& q, const AnimationCanvas& c) {
+  const double s = c.stroke, size = 4.5 * s;
+  std::vector<Box> out;
+  for (const auto& [name, p] : model.ground().points)
+    out.push_back({c.X(p.x()) - 3 * s, c.Y(p.y()) - 1.2 * s, c.X(p.x()) + 3 * s, c.Y(p.y()) + 5.1 * s});
+  for (std::size_t b = 0; b < model.bodies().size(); ++b)
+    for (const auto& [name, local] : model.bodies()[b].points) {
+      const Eigen::Vector2d p = at(q, static_cast<int>(b), local);
+      out.push_back({c.X(p.x()) - 1.8 * s, c.Y(p.y()) - 1.8 * s, c.X(p.x()) + 1.8 * s, c.Y(p.y()) + 1.8 * s});
+      out.push_back(text_box(c.X(p.x()) + 2 * s, c.Y(p.y()) - 2 * s, size, name.size(), 0.62));
+    }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> link_label_positions(const kin::Model& model, const Eigen::VectorXd& q, const AnimationCanvas& c,
+                                                  std::vector<std::size_t>& choice) {
+  const double s = c.stroke, size = 1.2 * 4.5 * s;
+  std::vector<Box> taken = label_obstacles(model, q, c);
+  std::vector<Eigen::Vector2d> out(model.bodies().size(), Eigen::Vector2d::Zero());
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const kin::Body& body = model.bodies()[b];
+    if (body.points.empty()) continue;
+    // Anchors: the middle of the link's points, then halfway from it to each point.
+    std::vector<Eigen::Vector2d> anchors{Eigen::Vector2d::Zero()};
+    for (const auto& [name, local] : body.points) anchors.front() += at(q, static_cast<int>(b), local);
+    anchors.front() /= static_cast<double>(body.points.size());
+    for (const auto& [name, local] : body.points) anchors.push_back(0.5 * (anchors.front() + at(q, static_cast<int>(b), local)));
+    const double w = 0.72 * size * static_cast<double>(body.name.size());
+    std::vector<Eigen::Vector2d> candidates;  // below right, above right, below left, above left
+    for (const Eigen::Vector2d& a : anchors)
+      for (const auto& [dx, dy] : {std::pair{s, 6 * s}, {s, -3 * s}, {-s - w, 6 * s}, {-s - w, -3 * s}})
+        candidates.emplace_back(c.X(a.x()) + dx, c.Y(a.y()) + dy);
+    auto clear = [&](std::size_t k) {
+      const Box box = text_box(candidates[k].x(), candidates[k].y(), size, body.name.size(), 0.72);
+      return std::none_of(taken.begin(), taken.end(), [&](const Box& o) { return box.meets(o); });
+    };
+    std::size_t k = choice[b] < candidates.size() && clear(choice[b]) ? choice[b] : 0;  // the last frame's, if still clear
+    while (k < candidates.size() && !clear(k)) ++k;
+    if (k == candidates.size()) k = 0;  // crowded: the first
+    choice[b] = k;
+    out[b] = candidates[k];
+    taken.push_back(text_box(out[b].x(), out[b].y(), size, body.name.size(), 0.72));
+  }
+  return out;
+}
+
 std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                         double duration) {
   std::string svg;
@@ -232,16 +365,16 @@ std::string name_labels(const kin::Model& model, const std::vector<const KinPosi
     svg += fmt::format("<text x=\"{:.3f}\" y=\"{:.3f}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" fill=\"#555\">{}</text>\n", c.X(p.x()) + 2 * c.stroke,
                        c.Y(p.y()) + 6 * c.stroke, size, io::xml_escape(name));
   }
+  std::vector<std::vector<Eigen::Vector2d>> at_frame;  // per frame, each link's name position
+  std::vector<std::size_t> choice(model.bodies().size(), 0);
+  for (const KinPosition* f : frames) at_frame.push_back(link_label_positions(model, f->q, c, choice));
   for (std::size_t b = 0; b < model.bodies().size() && !frames.empty(); ++b) {
     const kin::Body& body = model.bodies()[b];
     if (body.points.empty()) continue;
     std::vector<std::string> lx, ly;
-    for (const KinPosition* f : frames) {
-      Eigen::Vector2d mid = Eigen::Vector2d::Zero();
-      for (const auto& [name, local] : body.points) mid += at(f->q, static_cast<int>(b), local);
-      mid /= static_cast<double>(body.points.size());
-      lx.push_back(fmt::format("{:.3f}", c.X(mid.x()) + c.stroke));
-      ly.push_back(fmt::format("{:.3f}", c.Y(mid.y()) + 6 * c.stroke));
+    for (const auto& p : at_frame) {
+      lx.push_back(fmt::format("{:.3f}", p[b].x()));
+      ly.push_back(fmt::format("{:.3f}", p[b].y()));
     }
     svg += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"{:.3f}\" font-family=\"sans-serif\" font-weight=\"bold\">{}{}{}</text>\n", lx.front(), ly.front(),
                        1.2 * size, io::xml_escape(body.name), animate("x", lx, duration), animate("y", ly, duration));

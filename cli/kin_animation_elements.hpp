@@ -51,9 +51,57 @@ std::vector<GearCircle> gear_circles(const kin::Model& model, const std::vector<
 std::string gear_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                           double duration);
 
+/// The point of `body` a revolute pins to the ground, else to another link; none if no revolute
+/// holds it.
+std::optional<kin::BodyPoint> pivot_of(const kin::Model& model, int body);
+
+/// A cam of a cam_follower element (kin::ConstraintDrawing::Cam), in the cam's frame [m]: the
+/// pitch curve is the path of the roller centre in that frame over the sweep (one turn at most;
+/// `closed` when the sweep turns the cam a whole turn, else only the traced part, `turned` [rad]);
+/// the profile its inner envelope, offset by the roller radius along the normal towards the cam.
+struct CamPicture {
+  std::string name;
+  kin::ConstraintDrawing::Cam drawing;
+  std::vector<Eigen::Vector2d> pitch, profile;
+  Eigen::Vector2d axis = Eigen::Vector2d::Zero();  ///< the cam's pivot in its frame (its origin if none)
+  bool closed = false;
+  double turned = 0.0;
+  double reach = 0.0;  ///< the farthest point of both curves from the cam's frame origin [m]
+};
+std::vector<CamPicture> cam_pictures(const kin::Model& model, const std::vector<KinPosition>& positions);
+
+/// Each cam as one group in its body's frame (profile filled, pitch curve dashed) moved by the
+/// body's pose (animateTransform translate, then rotate added), and its roller circle.
+std::string cam_elements(const std::vector<CamPicture>& cams, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                         double duration);
+
+/// For the caption: which cams show only part of their profile (empty if none).
+std::string cam_notes(const std::vector<CamPicture>& cams);
+
+/// An epicyclic_train element drawn as a schematic: its central members' pitch circles about the
+/// common axis, radii in proportion to their teeth, on a notional scale (the element has no
+/// module) that puts the arm's farthest point midway between the smallest and largest circle (true
+/// scale for a sun-planet-ring train); the arm as a radial line to that point.
+struct TrainPicture {
+  std::string name;
+  std::vector<GearCircle> central;  ///< each axis a point of the member's body on the common axis
+  kin::BodyPoint arm_axis, arm_end;   ///< on the arm's body (the ground for a fixed arm)
+};
+std::vector<TrainPicture> train_pictures(const kin::Model& model, const std::vector<const KinPosition*>& frames);
+std::string train_elements(const std::vector<TrainPicture>& trains, const std::vector<const KinPosition*>& frames,
+                           const AnimationCanvas& c, double duration);
+
 /// The model's springs as zigzags between their two points, stretching with the motion.
 std::string spring_elements(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                             double duration);
+
+/// Where each link's name goes in one frame (text start and baseline, SVG units; zero for a link
+/// with no point): the first candidate about the link's middle (below right of it, above right,
+/// below left, above left; then about the points halfway to each point) whose box meets no joint
+/// circle, ground pivot, point name or link name placed before; `choice` (one per link) keeps
+/// the previous frame's candidate while it stays clear, so names do not jump between frames.
+std::vector<Eigen::Vector2d> link_label_positions(const kin::Model& model, const Eigen::VectorXd& q, const AnimationCanvas& c,
+                                                  std::vector<std::size_t>& choice);
 
 /// Link names at the middle of their points and point names beside them, moving with the links.
 std::string name_labels(const kin::Model& model, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,

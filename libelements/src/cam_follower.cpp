@@ -17,11 +17,15 @@ class CamFollower final : public kin::Constraint {
         follower_(translating_ ? p.point : kin::BodyPoint{p.follower, {}}),
         guide_(translating_ ? p.guide : kin::BodyPoint{p.relative_to, {}}),
         axis_(std::cos(p.axis), std::sin(p.axis)), cam_(p.cam), cam_zero_(p.cam_zero),
-        sigma_(p.clockwise ? -1.0 : 1.0), base_(p.base), program_(std::move(program)) {}
+        sigma_(p.clockwise ? -1.0 : 1.0), base_(p.base), program_(std::move(program)) {
+    const std::optional<kin::BodyPoint> contact = translating_ ? std::optional(p.point) : p.roller;
+    if (contact) drawing_.cam = kin::ConstraintDrawing::Cam{p.cam, *contact, p.roller_radius};
+  }
 
   std::string kind() const override { return "cam_follower"; }
   int equations() const override { return 1; }
   std::vector<int> bodies() const override { return {follower_.body, guide_.body, cam_}; }
+  kin::ConstraintDrawing drawing() const override { return drawing_; }
 
   void evaluate(const kin::ConstraintInput& in, kin::ConstraintOutput& out) const override {
     const kin::BodyState& cam = in.bodies[2];
@@ -66,6 +70,7 @@ class CamFollower final : public kin::Constraint {
   int cam_;
   double cam_zero_, sigma_, base_;
   cam::MotionProgram program_;
+  kin::ConstraintDrawing drawing_;
 };
 
 void check_parameters(const kin::Model& model, const CamFollowerParameters& p) {
@@ -81,7 +86,15 @@ void check_parameters(const kin::Model& model, const CamFollowerParameters& p) {
     if (p.follower == p.cam) throw kin::ElementError("follower", "expected the follower on another link than the cam");
     if (p.follower == p.relative_to)
       throw kin::ElementError("relative_to", "expected the follower's angle relative to another link");
+    if (p.roller && p.roller->body != p.follower) {
+      check_body(model, p.roller->body, "roller", true);
+      const auto name = [&](int b) { return b == kin::kGround ? std::string("ground") : model.bodies()[static_cast<std::size_t>(b)].name; };
+      throw kin::ElementError("roller", fmt::format("'roller': expected a point of the follower '{}', found a point of '{}'",
+                                                    name(p.follower), name(p.roller->body)));
+    }
   }
+  if (!(p.roller_radius >= 0.0) || !std::isfinite(p.roller_radius))
+    throw kin::ElementError("roller_radius", fmt::format("'roller_radius': expected a radius >= 0, found {:g} mm", 1e3 * p.roller_radius));
 }
 
 }  // namespace

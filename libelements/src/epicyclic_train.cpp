@@ -13,10 +13,15 @@ namespace {
 class EpicyclicTrain final : public kin::Constraint {
  public:
   EpicyclicTrain(const EpicyclicTrainParameters& p, double tau0, double phase)
-      : tau0_(tau0), relation_({{p.output, 1.0}, {p.input, -tau0}, {p.arm, tau0 - 1.0}}, phase, "epicyclic_train") {}
+      : tau0_(tau0), relation_({{p.output, 1.0}, {p.input, -tau0}, {p.arm, tau0 - 1.0}}, phase, "epicyclic_train") {
+    // The chain starts at the input's gear and ends at the output's.
+    drawing_.central = {{p.input, p.driving.front()}, {p.output, p.driven.back()}};
+    drawing_.arm = p.arm;
+  }
   std::string kind() const override { return "epicyclic_train"; }
   int equations() const override { return 1; }
   std::vector<int> bodies() const override { return relation_.bodies(); }
+  kin::ConstraintDrawing drawing() const override { return drawing_; }
   void evaluate(const kin::ConstraintInput& in, kin::ConstraintOutput& out) const override {
     relation_.evaluate(in, out);
   }
@@ -33,6 +38,7 @@ class EpicyclicTrain final : public kin::Constraint {
  private:
   double tau0_;
   kin::AngleRelation relation_;
+  kin::ConstraintDrawing drawing_;
 };
 
 double tooth_product(const std::vector<int>& teeth, const std::string& field) {

@@ -2,6 +2,7 @@
 #include <gearkit/io/drawing_annotation.hpp>
 
 #include "drawing_geometry.hpp"
+#include "glyphs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +12,6 @@
 namespace gearkit::io {
 
 namespace {
-
-// Characters, counting a UTF-8 sequence as one.
-std::size_t glyphs(const std::string& s) {
-  std::size_t n = 0;
-  for (unsigned char c : s) n += (c & 0xC0u) != 0x80u;
-  return n;
-}
 
 std::vector<double> column_widths(const TextTable& t, double h) {
   std::size_t columns = t.header.size();
@@ -37,7 +31,7 @@ std::vector<double> column_widths(const TextTable& t, double h) {
 
 }  // namespace
 
-double text_width(const std::string& text, double h) { return 0.62 * h * static_cast<double>(glyphs(text)); }
+double text_width(const std::string& text, double h) { return 0.62 * h * static_cast<double>(detail::glyphs(text)); }
 
 double text_height_for(double size) { return std::max(2.5, size / 60.0); }
 

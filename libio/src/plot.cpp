@@ -11,6 +11,7 @@
 #include <gearkit/io/xml.hpp>
 
 #include "drawing_geometry.hpp"
+#include "glyphs.hpp"
 
 namespace gearkit::io {
 
@@ -76,16 +77,9 @@ struct Segment {
 // Whether the segment has a point inside the rectangle.
 bool crosses(const Segment& s, const Rect& r) { return segment_meets_box(r.x, r.y, r.x + r.w, r.y + r.h, s.x1, s.y1, s.x2, s.y2); }
 
-// Glyph count, a UTF-8 sequence counting once.
-std::size_t glyphs(const std::string& s) {
-  std::size_t n = 0;
-  for (unsigned char c : s) n += (c & 0xC0u) != 0x80u;
-  return n;
-}
-
 Rect legend_size(const PlotPanel& p) {
   double w = 0;
-  for (const Series& s : p.series) w = std::max(w, 7.0 * static_cast<double>(glyphs(s.name)));
+  for (const Series& s : p.series) w = std::max(w, 7.0 * static_cast<double>(detail::glyphs(s.name)));
   return {0, 0, w + 44.0, 16.0 * static_cast<double>(p.series.size()) + 8.0};
 }
 

@@ -19,13 +19,6 @@ namespace gearkit::io {
 
 namespace detail {
 
-std::size_t display_width(std::string_view s) {
-  std::size_t w = 0;
-  for (unsigned char c : s)
-    if ((c & 0xC0) != 0x80) ++w;
-  return w;
-}
-
 namespace {
 
 const std::string kEmpty;
@@ -70,7 +63,7 @@ void append_csv_cell(std::string& out, const std::string& s) {
 
 void widen(std::vector<std::size_t>& width, const std::vector<std::string>& row) {
   if (width.size() < row.size()) width.resize(row.size(), 0);
-  for (std::size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], display_width(row[i]));
+  for (std::size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], glyphs(row[i]));
 }
 
 void text_line(std::string& s, const std::vector<std::string>& row, const std::vector<std::size_t>& width, bool header) {
@@ -79,7 +72,7 @@ void text_line(std::string& s, const std::vector<std::string>& row, const std::v
   for (std::size_t i = 0; i < width.size(); ++i) {
     const std::string& cell = i < row.size() ? row[i] : kEmpty;
     const bool right = !header && i > 0 && looks_numeric(cell);
-    const std::size_t w = display_width(cell);
+    const std::size_t w = glyphs(cell);
     if (right && w < width[i]) s.append(width[i] - w, ' ');
     s += cell;
     if (!right && w < width[i]) s.append(width[i] - w, ' ');

@@ -3,14 +3,13 @@
 // renderer (report.cpp) and the streamed one (report_stream.cpp), so both print alike.
 #include <gearkit/io/report.hpp>
 
+#include "glyphs.hpp"
+
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace gearkit::io::detail {
-
-/// Display width of a UTF-8 string (code points: right for the symbols used, °, α, ε, µ).
-std::size_t display_width(std::string_view s);
 
 /// Widens `width` (one entry per column, grown as needed) to fit the cells of `row`.
 void widen(std::vector<std::size_t>& width, const std::vector<std::string>& row);

@@ -29,7 +29,9 @@ std::unique_ptr<kin::Constraint> read_cam_follower(mechanism::ElementReader& rea
     p.follower = reader.link("follower");
     p.relative_to = reader.link_or("relative_to", kin::kGround);
     p.base = keys.quantity("base", io::Quantity::angle, "deg");
+    if (keys.has("roller")) p.roller = reader.point("roller");
   }
+  p.roller_radius = keys.quantity_or("roller_radius", io::Quantity::length, "mm", 0.0);
   // The solver works in SI: translating lifts stay in metres.
   p.motion = read_motion_segments(keys, !translating, 1.0);
   return elements::make_cam_follower(reader.model(), p);

@@ -397,10 +397,15 @@ void gear_bar(io::Drawing& d, std::vector<Candidates>& labels, const gt::TrainMo
   const double bottom = whole ? y0 - r : s[gear.member].lane_y;
   d.polylines.push_back({"gears", {{xl, bottom, 0}, {xr, bottom, 0}, {xr, y0 + r, 0}, {xl, y0 + r, 0}}, true});
   const double ty = m.is_planet(gear.member) ? y0 + 0.45 * r : y0 + std::max(0.55 * r, r - 2.0 * kText);
-  for (double x : {xr + 0.8, xl - 0.8 - w})
+  // Left of the bar the label may sit in the gap beside another gear's bar (the Ravigneaux's
+  // large sun, whose right is crossed by the carrier): a leader to its own bar says whose it is.
+  for (double x : {xr + 0.8, xl - 2.4 - w})
     for (double k = 0.0; k < 12.0; k += 1.0)
-      for (double y : {ty - 1.6 * kText * k, ty + 1.6 * kText * k})
-        if (y > bottom + 0.3 * kText && y < y0 + r - kText && (k > 0.0 || y == ty)) c.push_back(one_text("gear_labels", x, y, label));
+      for (double y : {ty - 1.6 * kText * k, ty + 1.6 * kText * k}) {
+        if (!(y > bottom + 0.3 * kText && y < y0 + r - kText && (k > 0.0 || y == ty))) continue;
+        c.push_back(one_text("gear_labels", x, y, label));
+        if (x < xl) c.back().lines.push_back({"gear_labels", x + w + 0.2, y + 0.35 * kText, xl, y + 0.35 * kText});
+      }
   if (c.empty()) c.push_back(one_text("gear_labels", xr + 0.8, ty, label));
   labels.push_back(std::move(c));
 }

@@ -3,10 +3,12 @@
 // element parameter is placed at its key.
 #include <run_gearkit.hpp>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -129,6 +131,34 @@ drivers:
             std::string::npos)
       << r.err;
   EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << r.err;
+}
+
+// The cam follower's drawing keys (docs/kin.md): a negative roller radius and a roller centre on
+// another link than the follower are bad input at their keys.
+TEST(ElementReactions, BadRollerIsPlacedAtItsKey) {
+  const std::string example = gearkit::testing::slurp(std::string(GEARKIT_SOURCE_DIR) + "/examples/mechanisms/cam_rocker.yaml");
+  ASSERT_NE(example.find("    roller_radius: 10 mm\n"), std::string::npos);
+  ASSERT_NE(example.find("    roller: rocker.R\n"), std::string::npos);
+  const auto line_of = [&](const std::string& text, const std::string& key) {
+    return std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text.find(key)), '\n') + 1;
+  };
+  std::string radius = example;
+  radius.replace(radius.find("roller_radius: 10 mm"), 20, "roller_radius: -3 mm");
+  const auto r = run_gearkit("kin " + write("bad_radius.yaml", radius));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(fmt::format("bad_radius.yaml:{}:20: 'roller_radius': expected a radius >= 0, found -3 mm",
+                                   line_of(radius, "roller_radius:"))),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << r.err;
+  std::string roller = example;
+  roller.replace(roller.find("roller: rocker.R"), 16, "roller: cam.Oc");
+  const auto c = run_gearkit("kin " + write("bad_roller.yaml", roller));
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find(fmt::format("bad_roller.yaml:{}:13: 'roller': expected a point of the follower 'rocker', found a point of 'cam'",
+                                   line_of(roller, "roller: cam"))),
+            std::string::npos)
+      << c.err;
 }
 
 }  // namespace

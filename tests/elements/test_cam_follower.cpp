@@ -6,6 +6,8 @@
 #include <gearkit/elements/cam_follower.hpp>
 #include <gearkit/kin/kinetostatics.hpp>
 
+#include <limits>
+
 namespace gearkit::elements {
 namespace {
 
@@ -183,6 +185,45 @@ TEST(CamFollower, ImpossibleParametersNameTheirField) {
   EXPECT_EQ(field_of(m.model, p), "motion");
   p.cam = 42;
   EXPECT_EQ(field_of(m.model, p), "cam");
+  p.cam = m.cam;
+  p.motion = rocker_program();
+  p.roller_radius = -0.001;
+  EXPECT_EQ(field_of(m.model, p), "roller_radius");
+  p.roller_radius = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(field_of(m.model, p), "roller_radius");
+  p.roller_radius = 0.010;
+  p.roller = point(m.model, m.cam, "Oc");  // the roller centre on the cam, not on the rocker
+  EXPECT_EQ(field_of(m.model, p), "roller");
+  p.roller = point(m.model, m.rocker, "E");
+  EXPECT_EQ(field_of(m.model, p), "");
+}
+
+// What drawings read: the cam, the roller centre (the rocker's point for an oscillating
+// follower, `point` for a translating one) and the roller radius, as given.
+TEST(CamFollower, DrawingGivesTheCamAndTheRoller) {
+  CamRocker m = cam_rocker(0.0);
+  CamFollowerParameters p;
+  p.cam = m.cam;
+  p.path = FollowerPath::oscillating;
+  p.follower = m.rocker;
+  p.motion = rocker_program();
+  EXPECT_FALSE(make_cam_follower(m.model, p)->drawing().cam);  // no roller point: nothing to draw
+  p.roller = point(m.model, m.rocker, "E");
+  p.roller_radius = 0.012;
+  const auto cam = make_cam_follower(m.model, p)->drawing().cam;
+  ASSERT_TRUE(cam);
+  EXPECT_EQ(cam->cam, m.cam);
+  EXPECT_EQ(cam->contact.body, m.rocker);
+  EXPECT_EQ(cam->contact.local, Eigen::Vector2d(0.100, 0));
+  EXPECT_EQ(cam->roller_radius, 0.012);
+  p.path = FollowerPath::translating;
+  p.point = point(m.model, m.slider, "F");
+  p.guide = point(m.model, kin::kGround, "G");
+  p.roller.reset();
+  const auto translating = make_cam_follower(m.model, p)->drawing().cam;
+  ASSERT_TRUE(translating);
+  EXPECT_EQ(translating->contact.body, m.slider);
+  EXPECT_EQ(translating->roller_radius, 0.012);
 }
 
 }  // namespace

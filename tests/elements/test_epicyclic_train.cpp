@@ -81,5 +81,28 @@ TEST(EpicyclicTrain, ImpossibleParametersNameTheirField) {
   EXPECT_EQ(field_of(model, q), "externals");
 }
 
+// Drawings get the central members with the teeth at the ends of the chain (the input's first
+// driving gear, the output's last driven gear) and the arm.
+TEST(EpicyclicTrain, DrawingGivesTheCentralMembersAndTheArm) {
+  kin::Model model;
+  const int sun = add_body(model, "sun", {0, 0}, 0.0, {{"O", {0, 0}}});
+  const int carrier = add_body(model, "carrier", {0, 0}, 0.0, {{"O", {0, 0}}});
+  EpicyclicTrainParameters p;
+  p.input = sun;
+  p.output = kin::kGround;
+  p.arm = carrier;
+  p.driving = {24, 18};
+  p.driven = {18, 60};
+  p.externals = 1;
+  const kin::ConstraintDrawing d = make_epicyclic_train(model, p)->drawing();
+  ASSERT_EQ(d.central.size(), 2u);
+  EXPECT_EQ(d.central[0].body, sun);
+  EXPECT_EQ(d.central[0].teeth, 24);
+  EXPECT_EQ(d.central[1].body, kin::kGround);
+  EXPECT_EQ(d.central[1].teeth, 60);
+  EXPECT_EQ(d.arm, carrier);
+  EXPECT_FALSE(d.cam);
+}
+
 }  // namespace
 }  // namespace gearkit::elements

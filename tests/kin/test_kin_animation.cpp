@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -189,4 +190,221 @@ TEST(KinAnimation, LinkNamesStayInsideThePicture) {
   double right = 0;
   for (std::string x; std::getline(xs, x, ';');) right = std::max(right, std::stod(x) + 0.68 * size * 6);
   EXPECT_LE(right, w);
+}
+
+namespace {
+
+// Runs `gearkit kin` on the model `text` with `options` and returns the animation.
+std::string animate_text(const std::string& text, const std::string& options) {
+  const fs::path dir = gearkit::testing::scratch_dir("kin-animation-text");
+  std::ofstream(dir / "m.yaml") << text;
+  const fs::path svg = dir / "a.svg";
+  const auto r = run_gearkit("kin " + shell_quote((dir / "m.yaml").string()) + " " + options + " --animate " + shell_quote(svg.string()));
+  EXPECT_EQ(r.status, 0) << r.err;
+  return gearkit::testing::slurp(svg);
+}
+
+// The attribute `attribute` of the element whose <title> is `title` (searched back from it).
+std::string attribute_before(const std::string& svg, const std::string& title, const std::string& attribute) {
+  const std::size_t at = svg.find("<title>" + title + "</title>");
+  EXPECT_NE(at, std::string::npos) << title;
+  if (at == std::string::npos) return {};
+  const std::size_t start = svg.rfind(" " + attribute + "=\"", at) + attribute.size() + 3;
+  return svg.substr(start, svg.find('"', start) - start);
+}
+
+// The values of the animateTransform of `type` after `from`.
+std::vector<std::string> transform_values(const std::string& svg, std::size_t from, const std::string& type) {
+  const std::size_t at = svg.find("type=\"" + type + "\"", from);
+  EXPECT_NE(at, std::string::npos) << type;
+  std::vector<std::string> out;
+  if (at == std::string::npos) return out;
+  const std::size_t values = svg.find("values=\"", at) + 8;
+  std::istringstream in(svg.substr(values, svg.find('"', values) - values));
+  for (std::string v; std::getline(in, v, ';');) out.push_back(v);
+  return out;
+}
+
+// Points "Mx,y Lx,y ... [Z]" of a path.
+std::vector<std::pair<double, double>> path_points(std::string d) {
+  for (char& ch : d)
+    if (ch == 'M' || ch == 'L' || ch == 'Z') ch = ' ';
+  return points_of(d);
+}
+
+// A cam turning counter-clockwise about the fixed O lifts a roller follower on a vertical guide
+// through O (no offset): base 50 mm, a simple harmonic rise of 20 mm over 180 deg and the same
+// return, so s(theta) = 10 (1 - cos theta) mm over the whole turn, and the roller centre is at
+// (0, r) with r = 60 - 10 cos theta mm. In the cam's frame (turned by theta) it is at
+// P(theta) = r (sin theta, cos theta): the pitch curve. The profile is P + r_r n, n the unit
+// normal of P towards O (P runs clockwise, so n is the right-hand normal of P').
+const char* kHarmonicCam = R"(ground: {O: [0, 0], G: [0, 0]}
+links:
+  cam: {points: {O: [0, 0]}}
+  follower: {points: {P: [0, 0]}, position: [0, 55]}
+joints:
+  - {name: shaft, type: revolute, at: [cam.O, ground.O]}
+  - {name: guide, type: prismatic, slider: follower.P, guide: ground.G, axis: 90 deg}
+elements:
+  - name: contact
+    type: cam_follower
+    cam: cam
+    follower_type: translating
+    point: follower.P
+    guide: ground.G
+    axis: 90 deg
+    base: 50 mm
+    roller_radius: 10 mm
+    motion:
+      - {type: rise, from: 0 deg, to: 180 deg, law: simple_harmonic, lift: 20 mm}
+      - {type: return, from: 180 deg, to: 360 deg, law: simple_harmonic}
+drivers:
+  - {name: cam angle, type: angle, link: cam}
+)";
+
+}  // namespace
+
+TEST(KinAnimation, CamProfileAndPitchCurveFromTheClosedForm) {
+  const std::string svg = animate_text(kHarmonicCam, "--sweep 0:360:2");
+  // The group's points are in the cam's frame in mm with y down: (x, -y).
+  const auto pitch = path_points(attribute_before(svg, "pitch curve contact", "d"));
+  const auto profile = path_points(attribute_before(svg, "cam profile contact", "d"));
+  ASSERT_EQ(pitch.size(), 180u);  // one turn, 0 to 358 deg: the curve closes
+  ASSERT_EQ(profile.size(), pitch.size());
+  const double rr = 10.0;
+  for (std::size_t i = 0; i < pitch.size(); ++i) {
+    const double t = static_cast<double>(i) * 2.0 * M_PI / 180.0, r = 60.0 - 10.0 * std::cos(t), dr = 10.0 * std::sin(t);
+    const double px = r * std::sin(t), py = r * std::cos(t);
+    EXPECT_NEAR(pitch[i].first, px, 2e-3) << i;
+    EXPECT_NEAR(-pitch[i].second, py, 2e-3) << i;
+    const double tx = dr * std::sin(t) + r * std::cos(t), ty = dr * std::cos(t) - r * std::sin(t), tn = std::hypot(tx, ty);
+    EXPECT_NEAR(profile[i].first, px + rr * ty / tn, 1e-2) << i;
+    EXPECT_NEAR(-profile[i].second, py - rr * tx / tn, 1e-2) << i;
+  }
+  EXPECT_EQ(attribute_before(svg, "roller contact", "r"), "10.000");
+  // The group turns with the cam: one value per frame (181 positions, 0 to 360 deg), the model's
+  // counter-clockwise angle a negative SVG rotation.
+  const std::size_t group = svg.find("<title>cam contact</title>");
+  ASSERT_NE(group, std::string::npos);
+  const auto rotate = transform_values(svg, group, "rotate"), translate = transform_values(svg, group, "translate");
+  ASSERT_EQ(rotate.size(), 181u);
+  EXPECT_EQ(translate.size(), 181u);
+  for (std::size_t i = 0; i < rotate.size(); ++i) EXPECT_NEAR(std::stod(rotate[i]), -2.0 * static_cast<double>(i), 1e-6) << i;
+  EXPECT_NE(svg.find("additive=\"sum\""), std::string::npos);
+  EXPECT_EQ(svg.find("only the"), std::string::npos);  // a whole turn: nothing left out
+}
+
+TEST(KinAnimation, CamSweptPartlyDrawsOnlyTheTracedPartAndSaysSo) {
+  // 0 to 90 deg: 46 pitch points, the last at 90 deg, r = 60 mm, so (60, 0) in the cam's frame.
+  const std::string svg = animate_text(kHarmonicCam, "--sweep 0:90:2");
+  const auto pitch = path_points(attribute_before(svg, "pitch curve contact", "d"));
+  ASSERT_EQ(pitch.size(), 46u);
+  EXPECT_NEAR(pitch.back().first, 60.0, 2e-3);
+  EXPECT_NEAR(pitch.back().second, 0.0, 2e-3);
+  EXPECT_NE(svg.find("cam (contact): only the 90 deg the sweep turns it are drawn"), std::string::npos);
+}
+
+namespace {
+
+// The total turn [rad] of the line "Mx,y Lx,y" animated in the element titled `title`.
+double turned(const std::string& svg, const std::string& title) {
+  const std::size_t at = svg.find("<title>" + title + "</title>");
+  EXPECT_NE(at, std::string::npos) << title;
+  if (at == std::string::npos) return 0.0;
+  const std::size_t values = svg.find("values=\"", at) + 8;
+  std::istringstream frames(svg.substr(values, svg.find('"', values) - values));
+  double total = 0.0, last = 0.0;
+  int n = 0;
+  for (std::string f; std::getline(frames, f, ';'); ++n) {
+    double mx = 0, my = 0, lx = 0, ly = 0;
+    EXPECT_EQ(std::sscanf(f.c_str(), "M%lf,%lf L%lf,%lf", &mx, &my, &lx, &ly), 4) << f;
+    const double a = std::atan2(-(ly - my), lx - mx);
+    if (n > 0) total += std::remainder(a - last, 2 * M_PI);
+    last = a;
+  }
+  return total;
+}
+
+// Seed 004's train (test KinCommand.EpicyclicTrainThroughThePlugin): sun 30, planet 45/45, ring
+// 90 teeth, tau0 = -(30 45)/(45 90) = -1/3.
+const char* kPlanetary = R"(ground: {O: [0, 0]}
+links:
+  sun: {points: {O: [0, 0]}}
+  arm: {points: {O: [0, 0], planet: [40, 0]}}
+joints:
+  - {type: revolute, at: [sun.O, ground.O]}
+  - {type: revolute, at: [arm.O, ground.O]}
+elements:
+  - {name: train, type: epicyclic_train, input: sun, output: ground, arm: arm, driving: [30, 45], driven: [45, 90], externals: 1}
+drivers:
+  - {name: sun angle, type: angle, link: sun}
+)";
+
+}  // namespace
+
+TEST(KinAnimation, EpicyclicTrainMembersTurnAtWillisSpeeds) {
+  // Ring fixed: Willis (w_ring - w_arm) = tau0 (w_sun - w_arm) with w_ring = 0 gives
+  // w_arm = tau0 / (tau0 - 1) w_sun = 1/4 w_sun: a turn of the sun turns the arm 90 deg.
+  const std::string fixed_ring = animate_text(kPlanetary, "--sweep 0:360:10");
+  const double r_sun = std::stod(attribute_before(fixed_ring, "pitch circle sun", "r"));
+  const double r_ring = std::stod(attribute_before(fixed_ring, "pitch circle ground", "r"));
+  EXPECT_NEAR(r_sun / r_ring, 30.0 / 90.0, 1e-4);
+  EXPECT_NEAR(turned(fixed_ring, "tooth mark sun"), 2 * M_PI, 1e-6);
+  EXPECT_NEAR(turned(fixed_ring, "tooth mark ground"), 0.0, 1e-12);
+  EXPECT_NEAR(turned(fixed_ring, "arm train"), M_PI / 2, 1e-4);
+  EXPECT_NE(fixed_ring.find("train (train): pitch circles to a notional scale (no module)"), std::string::npos);
+  // Arm fixed, ring free: w_ring = tau0 w_sun = -1/3 w_sun, the ring turns back 120 deg.
+  std::string text = kPlanetary;
+  text.replace(text.find("arm: {points: {O: [0, 0], planet: [40, 0]}}"), 43, "ring: {points: {O: [0, 0]}}");
+  text.replace(text.find("at: [arm.O"), 10, "at: [ring.O");
+  text.replace(text.find("output: ground, arm: arm"), 24, "output: ring, arm: ground");
+  const std::string fixed_arm = animate_text(text, "--sweep 0:360:10");
+  EXPECT_NEAR(std::stod(attribute_before(fixed_arm, "pitch circle sun", "r")) /
+                  std::stod(attribute_before(fixed_arm, "pitch circle ring", "r")),
+              30.0 / 90.0, 1e-4);
+  EXPECT_NEAR(turned(fixed_arm, "tooth mark ring") / turned(fixed_arm, "tooth mark sun"), -1.0 / 3.0, 1e-4);
+}
+
+namespace {
+
+std::vector<double> values_after(const std::string& svg, std::size_t from, const std::string& attribute) {
+  const std::size_t at = svg.find("attributeName=\"" + attribute + "\"", from);
+  const std::size_t v = svg.find("values=\"", at) + 8;
+  std::vector<double> out;
+  std::istringstream in(svg.substr(v, svg.find('"', v) - v));
+  for (std::string x; std::getline(in, x, ';');) out.push_back(std::stod(x));
+  return out;
+}
+
+}  // namespace
+
+TEST(KinAnimation, LinkNamesKeepClearOfJointsAndPivots) {
+  // parallelogram.yaml lies flat at 0 and 180 deg: the rod's name, below the middle of A B, lay on
+  // the pivot O4's triangle. In every frame the name's box (bold, about 0.72 of the font size a
+  // character, from the font size above the baseline to a quarter below) must miss every joint
+  // circle and every ground triangle as the SVG draws them.
+  const std::string svg = animate("parallelogram.yaml", "");
+  const std::size_t label = svg.find("font-weight=\"bold\">rod<animate");
+  ASSERT_NE(label, std::string::npos);
+  const double size = std::stod(svg.substr(svg.rfind("font-size=\"", label) + 11));
+  const std::vector<double> x = values_after(svg, label, "x"), y = values_after(svg, label, "y");
+  ASSERT_EQ(x.size(), 73u);  // 0 to 360 deg by 5 deg
+  std::vector<std::array<double, 4>> fixed;  // the ground triangles' boxes
+  for (const char* pivot : {"ground.O2", "ground.O4"}) {
+    const std::size_t t = svg.find(std::string("<title>") + pivot + "</title>");
+    const std::size_t p = svg.rfind("points=\"", t) + 8;
+    const auto pts = points_of(svg.substr(p, svg.find('"', p) - p));
+    fixed.push_back({pts[1].first, pts[0].second, pts[2].first, pts[1].second});
+  }
+  for (std::size_t f = 0; f < x.size(); ++f) {
+    const double x0 = x[f], x1 = x[f] + 0.72 * size * 3, y0 = y[f] - size, y1 = y[f] + 0.25 * size;
+    for (const auto& b : fixed) EXPECT_FALSE(x0 < b[2] && b[0] < x1 && y0 < b[3] && b[1] < y1) << "frame " << f;
+    for (const char* joint : {"crank.O2", "crank.A", "rod.A", "rod.B", "rocker.O4", "rocker.B"}) {
+      const std::size_t t = svg.find(std::string("<title>") + joint + "</title>");
+      ASSERT_NE(t, std::string::npos) << joint;
+      const double r = std::stod(svg.substr(svg.rfind(" r=\"", t) + 4));
+      const double cx = values_after(svg, t, "cx")[f], cy = values_after(svg, t, "cy")[f];
+      EXPECT_FALSE(x0 < cx + r && cx - r < x1 && y0 < cy + r && cy - r < y1) << "frame " << f << " " << joint;
+    }
+  }
 }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -207,5 +208,44 @@ TEST(TrainDiagram, LabelsClearOfEachOtherAndOfLinesAndLeadersDoNotCross) {
     const auto& leaders = j["lines"]["speed_labels"];
     for (std::size_t a = 0; a < leaders.size(); ++a)
       for (std::size_t b = a + 1; b < leaders.size(); ++b) EXPECT_FALSE(segments_cross(leaders[a], leaders[b])) << name << " " << a << " " << b;
+  }
+}
+
+TEST(TrainDiagram, GearLabelNextToAnotherBarHasALeaderToItsOwn) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  // Gear labels sit right of their bars; one pushed to the left of its bar, within 1.5 text
+  // heights of another gear's bar on its left (at its mid-height), reads as that gear's: the
+  // Ravigneaux's "zs2: z = 36", pushed left by the carrier, sat beside the small sun's bar under
+  // "zs1: z = 30". Such a label has a leader from its end to its own bar.
+  for (const auto& [name, spec] : kExamples) {
+    const nlohmann::json d = drawing_of(name);
+    const auto& bars = d["polyline_shapes"]["gears"];
+    const auto& at = d["text_at"]["gear_labels"];
+    const nlohmann::json leaders = d["lines"].contains("gear_labels") ? d["lines"]["gear_labels"] : nlohmann::json::array();
+    auto box = [&](std::size_t i) {  // x0, x1, y0, y1 of bar i
+      double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+      for (const auto& p : bars[i]["points"]) {
+        x0 = std::min(x0, p[0].get<double>()), x1 = std::max(x1, p[0].get<double>());
+        y0 = std::min(y0, p[1].get<double>()), y1 = std::max(y1, p[1].get<double>());
+      }
+      return std::array<double, 4>{x0, x1, y0, y1};
+    };
+    for (std::size_t i = 0; i < spec.first.size(); ++i) {
+      if (spec.first[i].internal) continue;
+      const double h = d["text_height"]["gear_labels"][i], tx = at[i][1], ty = at[i][2];
+      const double w = 0.62 * h * static_cast<double>(at[i][0].get<std::string>().size()), mid = ty + 0.35 * h;
+      bool near_other = false;
+      for (std::size_t j = 0; j < bars.size(); ++j) {
+        const auto b = box(j);
+        if (j == i || mid < b[2] || mid > b[3]) continue;
+        near_other = near_other || (b[1] <= tx && tx - b[1] < 1.5 * h);
+      }
+      const auto own = box(i);
+      if (!near_other || tx + w > own[0]) continue;
+      const bool led = std::any_of(leaders.begin(), leaders.end(), [&](const nlohmann::json& l) {
+        return std::abs(l[0].get<double>() - (tx + w)) < 0.5 * h && std::abs(l[2].get<double>() - own[0]) < 1e-6;
+      });
+      EXPECT_TRUE(led) << name << " " << at[i][0];
+    }
   }
 }

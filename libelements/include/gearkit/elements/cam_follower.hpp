@@ -14,6 +14,7 @@
 #include <gearkit/kin/model.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,13 +40,21 @@ struct CamFollowerParameters {
   double cam_zero = 0.0;   ///< cam angle where the program's theta = 0 [rad]
   /// The motion program: lifts in m (translating) or rad (oscillating), angles in rad.
   std::vector<cam::Segment> motion;
+  /// Radius of the follower's roller [m], >= 0; 0: a knife edge. Drawing only (the motion is the
+  /// program's whatever the roller), as kin::ConstraintDrawing::Cam.
+  double roller_radius = 0.0;
+  /// Oscillating: the roller centre (or knife tip) on the follower's body, for drawings; none:
+  /// the cam is not drawn. Translating: unused, the roller centre is `point`.
+  std::optional<kin::BodyPoint> roller;
 };
 
 /// Builds a cam follower between bodies of `model`.
-/// @throws kin::ElementError (field "cam", "point", "guide", "follower", "relative_to", "motion")
-///         for a body not in the model, a follower on the cam's body, follower and reference the
-///         same body, or a motion program libcam rejects (its message).
+/// @throws kin::ElementError (field "cam", "point", "guide", "follower", "relative_to", "motion",
+///         "roller_radius", "roller") for a body not in the model, a follower on the cam's body,
+///         follower and reference the same body, a motion program libcam rejects (its message),
+///         a negative or non-finite roller radius, or a roller centre not on the follower's body.
 /// Reaction values: F [N] (translating) or T_f [N m] (oscillating), and T_cam [N m].
+/// drawing(): the cam, the roller centre (`point`, or `roller` when given) and the roller radius.
 std::unique_ptr<kin::Constraint> make_cam_follower(const kin::Model& model, const CamFollowerParameters& p);
 
 /// make_cam_follower added to `model` as constraint `name`. @returns its index.

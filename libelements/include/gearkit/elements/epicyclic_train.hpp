@@ -36,6 +36,8 @@ double basic_ratio(const EpicyclicTrainParameters& p);
 ///         "externals") for a body index not in the model, the three bodies not all different,
 ///         an empty tooth list or a tooth number below 1, externals < 0.
 /// Reaction values: T_in, T_out, T_arm [N m], the torques on the three members from the train.
+/// drawing(): the central members, input with driving.front() teeth and output with
+/// driven.back(), and the arm.
 std::unique_ptr<kin::Constraint> make_epicyclic_train(const kin::Model& model, const EpicyclicTrainParameters& p);
 
 /// make_epicyclic_train added to `model` as constraint `name`. @returns its index.

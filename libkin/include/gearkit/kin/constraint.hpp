@@ -26,6 +26,12 @@ namespace gearkit::kin {
 /// The index used for the ground (fixed frame) wherever a body index is expected.
 inline constexpr int kGround = -1;
 
+/// A point of a body: the body index (or kGround) and its local coordinates [m].
+struct BodyPoint {
+  int body = kGround;
+  Eigen::Vector2d local = Eigen::Vector2d::Zero();
+};
+
 /// Pose and velocity of one body, all SI: r [m], theta [rad], r_dot [m/s], omega [rad/s].
 /// The cosine and sine of theta are kept with it because every joint on the body needs them:
 /// the solver computes them once per body and evaluation. Change theta through set_theta().
@@ -90,6 +96,29 @@ struct Reaction {
   std::vector<ReactionValue> values;
 };
 
+/// What an element shows in pictures beyond the points of its bodies (the animation of `gearkit
+/// kin`): read-only geometry the solver never uses. Empty for the built-in joints, which the
+/// pictures know by their type.
+struct ConstraintDrawing {
+  /// A cam on body `cam` touching a follower at `contact`: the roller centre (or knife tip) on the
+  /// follower's body. The path of `contact` in the cam's frame is the pitch curve; the profile is
+  /// its inner envelope offset by `roller_radius` [m] (0: a knife edge, profile = pitch curve).
+  struct Cam {
+    int cam = kGround;
+    BodyPoint contact;
+    double roller_radius = 0.0;
+  };
+  /// A member of a gear train turning about the train's central axis, with its number of teeth.
+  struct Wheel {
+    int body = kGround;
+    int teeth = 0;
+  };
+  std::optional<Cam> cam;
+  /// The central members of an epicyclic train (input first), coaxial; with `arm`, the carrier.
+  std::vector<Wheel> central;
+  std::optional<int> arm;
+};
+
 /// A set of scleronomic or rheonomic equations between the coordinates of a few bodies.
 class Constraint {
  public:
@@ -113,6 +142,9 @@ class Constraint {
   /// elements override it to report what an engineer reads (tooth force, contact force).
   /// May allocate; called once per reported position, not in the solver loops.
   virtual Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const;
+  /// What pictures draw of the constraint beyond its bodies' points (cams, train members); the
+  /// default is nothing. Plugin API 4.
+  virtual ConstraintDrawing drawing() const { return {}; }
 };
 
 // Small helpers shared by the built-in constraints and the plugins' elements.

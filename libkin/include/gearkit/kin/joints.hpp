@@ -6,12 +6,6 @@
 
 namespace gearkit::kin {
 
-/// A point of a body: the body index (or kGround) and its local coordinates [m].
-struct BodyPoint {
-  int body = kGround;
-  Eigen::Vector2d local = Eigen::Vector2d::Zero();
-};
-
 /// Revolute (pin) joint: point a of one body coincides with point b of another. 2 equations:
 /// Phi = r_a - r_b. The multiplier is the force [N] that body b exerts on body a, with the
 /// sign convention F_on_a = -lambda; reaction() gives that force at the joint point (a pin).

@@ -72,7 +72,9 @@ inline constexpr std::uint64_t kElementAbi = plugin::abi::fingerprint({
     sizeof(kin::ConstraintOutput), offsetof(kin::ConstraintOutput, phi_q), offsetof(kin::ConstraintOutput, gamma),
     sizeof(kin::Reaction), offsetof(kin::Reaction, moment), offsetof(kin::Reaction, at), offsetof(kin::Reaction, values),
     sizeof(kin::ReactionValue), offsetof(kin::ReactionValue, value), sizeof(kin::Constraint),
-    sizeof(kin::ElementError)});
+    sizeof(kin::ElementError), sizeof(kin::ConstraintDrawing), offsetof(kin::ConstraintDrawing, central),
+    offsetof(kin::ConstraintDrawing, arm), sizeof(kin::ConstraintDrawing::Cam),
+    offsetof(kin::ConstraintDrawing::Cam, roller_radius), sizeof(kin::ConstraintDrawing::Wheel)});
 #pragma GCC diagnostic pop
 
 }  // namespace gearkit::mechanism

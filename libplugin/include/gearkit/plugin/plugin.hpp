@@ -40,8 +40,9 @@ struct ElementTypeSpec;  // <gearkit/mechanism/element_type.hpp>
 namespace gearkit::plugin {
 
 /// 3: gearkit::plugin namespace, host services, stamp section, ABI fingerprints, element readers
-/// and element reactions.
-inline constexpr std::uint32_t kApiVersion = 3;
+/// and element reactions. 4: kin::Constraint::drawing (a new virtual function: the vtable the
+/// host calls changed, which no fingerprint of sizes sees).
+inline constexpr std::uint32_t kApiVersion = 4;
 
 struct PluginInfo {
   const char* name;     ///< short name, e.g. "gear"

@@ -1,0 +1,174 @@
+// Cams of cam_follower elements and the central members of epicyclic_train elements in the
+// animation of `gearkit kin --animate`, from the geometry the constraints give for drawings
+// (kin::Constraint::drawing).
+#include "kin_animation_elements.hpp"
+
+#include <gearkit/io/xml.hpp>
+#include <gearkit/kin/joints.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace gearkit::cli {
+
+namespace {
+
+Eigen::Vector2d at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
+  return kin::Model::point_position(q, {body, local});
+}
+
+double angle_of(const Eigen::VectorXd& q, int body) { return body == kin::kGround ? 0.0 : q(3 * body + 2); }
+
+// The pose of a body's frame in SVG units: the origin and the angle in degrees, negative for a
+// counter-clockwise model angle since the SVG's y axis points down.
+std::string translate_value(const Eigen::VectorXd& q, int body, const AnimationCanvas& c) {
+  const Eigen::Vector2d o = at(q, body, Eigen::Vector2d::Zero());
+  return fmt::format("{:.3f},{:.3f}", c.X(o.x()), c.Y(o.y()));
+}
+std::string rotate_value(const Eigen::VectorXd& q, int body) {
+  return fmt::format("{:.4f}", -angle_of(q, body) * 180.0 / std::numbers::pi);
+}
+
+std::string body_frame_group_open(const std::vector<const KinPosition*>& frames, int body, const AnimationCanvas& c,
+                                  const std::string& title) {
+  return fmt::format("<g transform=\"translate({}) rotate({})\"><title>{}</title>\n", translate_value(frames.front()->q, body, c),
+                     rotate_value(frames.front()->q, body), io::xml_escape(title));
+}
+
+// The group's motion: the body's origin, then its rotation added to it.
+std::string body_frame_motion(const std::vector<const KinPosition*>& frames, int body, const AnimationCanvas& c, double duration) {
+  if (frames.size() < 2) return {};
+  std::vector<std::string> translate, rotate;
+  for (const KinPosition* f : frames) {
+    translate.push_back(translate_value(f->q, body, c));
+    rotate.push_back(rotate_value(f->q, body));
+  }
+  return fmt::format("<animateTransform attributeName=\"transform\" type=\"translate\" dur=\"{0:.3f}s\" repeatCount=\"indefinite\" "
+                     "values=\"{1}\"/>\n<animateTransform attributeName=\"transform\" type=\"rotate\" additive=\"sum\" "
+                     "dur=\"{0:.3f}s\" repeatCount=\"indefinite\" values=\"{2}\"/>\n",
+                     duration, fmt::join(translate, ";"), fmt::join(rotate, ";"));
+}
+
+// Points of the cam's frame [m] as SVG path data in the group's units (mm, y down).
+std::string path_data(const std::vector<Eigen::Vector2d>& pts, double scale, bool closed) {
+  std::string d;
+  for (const Eigen::Vector2d& p : pts) d += fmt::format("{}{:.3f},{:.3f}", d.empty() ? "M" : " L", p.x() * scale, -p.y() * scale);
+  return closed ? d + " Z" : d;
+}
+
+// The side the cam lies on: +1 if the pitch curve runs counter-clockwise about the cam's axis
+// `a` (the cam is on its left), -1 if clockwise.
+double cam_side(const std::vector<Eigen::Vector2d>& pitch, const Eigen::Vector2d& a) {
+  double turn = 0.0;
+  for (std::size_t i = 1; i < pitch.size(); ++i) turn += kin::cross(pitch[i - 1] - a, pitch[i] - pitch[i - 1]);
+  return turn >= 0.0 ? 1.0 : -1.0;
+}
+
+// The profile a roller of radius rr leaves: each pitch point moved by rr along the pitch curve's
+// normal towards the cam (the inner envelope of the roller's circles), the tangent by central
+// differences (one-sided at the ends of an open curve).
+std::vector<Eigen::Vector2d> profile_of(const std::vector<Eigen::Vector2d>& pitch, bool closed, double side, double rr) {
+  std::vector<Eigen::Vector2d> out;
+  const std::size_t n = pitch.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t prev = i > 0 ? i - 1 : (closed ? n - 1 : 0), next = i + 1 < n ? i + 1 : (closed ? 0 : n - 1);
+    const Eigen::Vector2d t = pitch[next] - pitch[prev];
+    out.push_back(t.norm() > 0 ? Eigen::Vector2d(pitch[i] + side * rr * kin::perp(t).normalized()) : pitch[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<kin::BodyPoint> pivot_of(const kin::Model& model, int body) {
+  std::optional<kin::BodyPoint> any;
+  for (const auto& mc : model.constraints()) {
+    const auto* r = dynamic_cast<const kin::Revolute*>(mc.constraint.get());
+    if (!r || body == kin::kGround) continue;
+    for (const auto& [mine, other] : {std::pair{r->a(), r->b()}, std::pair{r->b(), r->a()}}) {
+      if (mine.body != body) continue;
+      if (other.body == kin::kGround) return mine;
+      if (!any) any = mine;
+    }
+  }
+  return any;
+}
+
+std::vector<CamPicture> cam_pictures(const kin::Model& model, const std::vector<KinPosition>& positions) {
+  std::vector<CamPicture> out;
+  for (const auto& mc : model.constraints()) {
+    const std::optional<kin::ConstraintDrawing::Cam> cam = mc.constraint->drawing().cam;
+    if (!cam || positions.size() < 2) continue;
+    CamPicture p;
+    p.name = mc.name;
+    p.drawing = *cam;
+    const double theta0 = angle_of(positions.front().q, cam->cam);
+    for (const KinPosition& f : positions) {
+      const double turned = std::abs(angle_of(f.q, cam->cam) - theta0);
+      if (turned >= 2.0 * std::numbers::pi - 1e-9) {  // a whole turn: the curve closes
+        p.closed = true;
+        break;
+      }
+      p.turned = std::max(p.turned, turned);
+      const Eigen::Vector2d origin = at(f.q, cam->cam, Eigen::Vector2d::Zero());
+      p.pitch.push_back(kin::rotate(-angle_of(f.q, cam->cam), at(f.q, cam->contact.body, cam->contact.local) - origin));
+    }
+    const std::optional<kin::BodyPoint> axis = pivot_of(model, cam->cam);
+    p.axis = axis ? axis->local : Eigen::Vector2d::Zero();
+    p.profile = profile_of(p.pitch, p.closed, cam_side(p.pitch, p.axis), cam->roller_radius);
+    for (const auto* curve : {&p.pitch, &p.profile})
+      for (const Eigen::Vector2d& v : *curve) p.reach = std::max(p.reach, v.norm());
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+std::string cam_elements(const std::vector<CamPicture>& cams, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
+                         double duration) {
+  std::string svg;
+  for (const CamPicture& cam : cams) {
+    if (frames.empty()) continue;
+    const int body = cam.drawing.cam;
+    std::vector<Eigen::Vector2d> fill = cam.profile;
+    if (!cam.closed) fill.insert(fill.begin(), cam.axis);  // the traced sector, closed through the axis
+    svg += body_frame_group_open(frames, body, c, "cam " + cam.name);
+    svg += fmt::format("<path d=\"{}\" fill=\"#e9dcc0\" stroke=\"none\"/>\n", path_data(fill, c.scale, true));
+    svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#6b4e16\" stroke-width=\"{:.3f}\"><title>cam profile {}</title></path>\n",
+                       path_data(cam.profile, c.scale, cam.closed), 0.8 * c.stroke, io::xml_escape(cam.name));
+    if (cam.drawing.roller_radius > 0)
+      svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#6b4e16\" stroke-width=\"{:.3f}\" stroke-dasharray=\"{:.3f} {:.3f}\">"
+                         "<title>pitch curve {}</title></path>\n",
+                         path_data(cam.pitch, c.scale, cam.closed), 0.35 * c.stroke, 2 * c.stroke, 1.2 * c.stroke,
+                         io::xml_escape(cam.name));
+    svg += body_frame_motion(frames, body, c, duration) + "</g>\n";
+    if (!(cam.drawing.roller_radius > 0)) continue;
+    std::vector<std::string> cx, cy;
+    for (const KinPosition* f : frames) {
+      const Eigen::Vector2d p = at(f->q, cam.drawing.contact.body, cam.drawing.contact.local);
+      cx.push_back(fmt::format("{:.3f}", c.X(p.x())));
+      cy.push_back(fmt::format("{:.3f}", c.Y(p.y())));
+    }
+    svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"{:.3f}\" fill=\"#f4f4f4\" stroke=\"#333\" stroke-width=\"{:.3f}\"><title>roller {}</title>",
+                       cx.front(), cy.front(), cam.drawing.roller_radius * c.scale, 0.6 * c.stroke, io::xml_escape(cam.name));
+    if (frames.size() > 1)
+      svg += fmt::format("<animate attributeName=\"cx\" dur=\"{0:.3f}s\" repeatCount=\"indefinite\" values=\"{1}\"/>"
+                         "<animate attributeName=\"cy\" dur=\"{0:.3f}s\" repeatCount=\"indefinite\" values=\"{2}\"/>",
+                         duration, fmt::join(cx, ";"), fmt::join(cy, ";"));
+    svg += "</circle>\n";
+  }
+  return svg;
+}
+
+std::string cam_notes(const std::vector<CamPicture>& cams) {
+  std::string text;
+  for (const CamPicture& cam : cams)
+    if (!cam.closed && cam.drawing.cam != kin::kGround)
+      text += fmt::format("{}cam ({}): only the {:.0f} deg the sweep turns it are drawn", text.empty() ? "" : "; ", cam.name,
+                          cam.turned * 180.0 / std::numbers::pi);
+  return text;
+}
+
+}  // namespace gearkit::cli
