@@ -128,7 +128,10 @@ std::string animation_svg(const mechanism::Mechanism& mech, const KinAnalysis& a
   for (const GearCircle& g : gear_circles(m, frames)) discs.emplace_back(g.axis, 1.12 * g.r);
   for (const TrainPicture& t : trains)
     for (const GearCircle& g : t.central) discs.emplace_back(g.axis, 1.12 * g.r);
-  for (const CamPicture& c : cams) discs.emplace_back(kin::BodyPoint{c.drawing.cam, Eigen::Vector2d::Zero()}, c.reach + c.drawing.roller_radius);
+  for (const CamPicture& c : cams) {
+    discs.emplace_back(kin::BodyPoint{c.drawing.cam, Eigen::Vector2d::Zero()}, c.reach + c.drawing.roller_radius);
+    if (c.face_span) discs.emplace_back(c.drawing.contact, std::max(std::abs(c.face_span->first), std::abs(c.face_span->second)));
+  }
   double w = 0, h = 0;
   const AnimationCanvas canvas = canvas_of(m, frames, discs, w, h);
   const double stroke = canvas.stroke;

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gearkit::cli {
@@ -58,7 +59,8 @@ std::optional<kin::BodyPoint> pivot_of(const kin::Model& model, int body);
 /// A cam of a cam_follower element (kin::ConstraintDrawing::Cam), in the cam's frame [m]: the
 /// pitch curve is the path of the roller centre in that frame over the sweep (one turn at most;
 /// `closed` when the sweep turns the cam a whole turn, else only the traced part, `turned` [rad]);
-/// the profile its inner envelope, offset by the roller radius along the normal towards the cam.
+/// the profile its inner envelope, offset by the roller radius along the normal towards the cam;
+/// for a flat-faced follower, the envelope of the face's lines seen from the cam.
 struct CamPicture {
   std::string name;
   kin::ConstraintDrawing::Cam drawing;
@@ -67,11 +69,15 @@ struct CamPicture {
   bool closed = false;
   double turned = 0.0;
   double reach = 0.0;  ///< the farthest point of both curves from the cam's frame origin [m]
+  /// A flat face: the drawn segment's ends along the face from its point [m], the contact's
+  /// travel along it and a tenth of `reach` beyond each end.
+  std::optional<std::pair<double, double>> face_span;
 };
 std::vector<CamPicture> cam_pictures(const kin::Model& model, const std::vector<KinPosition>& positions);
 
 /// Each cam as one group in its body's frame (profile filled, pitch curve dashed) moved by the
-/// body's pose (animateTransform translate, then rotate added), and its roller circle.
+/// body's pose (animateTransform translate, then rotate added), and its roller circle or its flat
+/// face (a segment moving with the follower).
 std::string cam_elements(const std::vector<CamPicture>& cams, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c,
                          double duration);
 

@@ -10,6 +10,20 @@ namespace gearkit::elements {
 
 namespace {
 
+// What drawings show: the roller centre, or the flat face (translating: across the guide, in
+// the guide's frame, which the follower's face keeps perpendicular to its travel).
+std::optional<kin::ConstraintDrawing::Cam> cam_drawing(const CamFollowerParameters& p) {
+  using Face = kin::ConstraintDrawing::Cam::Face;
+  const bool translating = p.path == FollowerPath::translating;
+  const std::optional<kin::BodyPoint> contact = translating ? std::optional(p.point) : p.flat_face ? p.face_point : p.roller;
+  if (!contact) return std::nullopt;
+  kin::ConstraintDrawing::Cam cam{p.cam, *contact, p.roller_radius, std::nullopt};
+  if (p.flat_face)
+    cam.face = translating ? Face{p.guide.body, Eigen::Vector2d(-std::sin(p.axis), std::cos(p.axis))}
+                           : Face{p.follower, Eigen::Vector2d(std::cos(*p.face_angle), std::sin(*p.face_angle))};
+  return cam;
+}
+
 class CamFollower final : public kin::Constraint {
  public:
   CamFollower(const CamFollowerParameters& p, cam::MotionProgram program)
@@ -18,8 +32,7 @@ class CamFollower final : public kin::Constraint {
         guide_(translating_ ? p.guide : kin::BodyPoint{p.relative_to, {}}),
         axis_(std::cos(p.axis), std::sin(p.axis)), cam_(p.cam), cam_zero_(p.cam_zero),
         sigma_(p.clockwise ? -1.0 : 1.0), base_(p.base), program_(std::move(program)) {
-    const std::optional<kin::BodyPoint> contact = translating_ ? std::optional(p.point) : p.roller;
-    if (contact) drawing_.cam = kin::ConstraintDrawing::Cam{p.cam, *contact, p.roller_radius};
+    drawing_.cam = cam_drawing(p);
   }
 
   std::string kind() const override { return "cam_follower"; }
@@ -73,6 +86,37 @@ class CamFollower final : public kin::Constraint {
   kin::ConstraintDrawing drawing_;
 };
 
+std::string body_name(const kin::Model& model, int b) {
+  return b == kin::kGround ? std::string("ground") : model.bodies()[static_cast<std::size_t>(b)].name;
+}
+
+// The drawing keys: a roller or a flat face, each on the follower.
+void check_drawing(const kin::Model& model, const CamFollowerParameters& p) {
+  if (!(p.roller_radius >= 0.0) || !std::isfinite(p.roller_radius))
+    throw kin::ElementError("roller_radius", fmt::format("'roller_radius': expected a radius >= 0, found {:g} mm", 1e3 * p.roller_radius));
+  if (p.flat_face && p.roller_radius > 0.0)
+    throw kin::ElementError("roller_radius", fmt::format("'roller_radius': expected none with face: flat (the face touches the cam), "
+                                                         "found {:g} mm", 1e3 * p.roller_radius));
+  if (p.flat_face && p.roller)
+    throw kin::ElementError("roller", "'roller': expected none with face: flat (face_point gives the face), found a roller centre");
+  const bool oscillating_face = p.flat_face && p.path == FollowerPath::oscillating;
+  for (const auto& [given, key] : {std::pair{p.face_point.has_value(), "face_point"}, std::pair{p.face_angle.has_value(), "face_angle"}})
+    if (given && !oscillating_face)
+      throw kin::ElementError(key, fmt::format("'{}': {}", key,
+                                               p.flat_face ? "expected none on a translating follower (its face is the line through "
+                                                             "'point' across the guide), found one"
+                                                           : "expected it with face: flat only, found a roller follower"));
+  if (oscillating_face) {
+    if (!p.face_point) throw kin::ElementError("face_point", "expected 'face_point' (a point of the follower's face) with face: flat");
+    if (!p.face_angle || !std::isfinite(*p.face_angle))
+      throw kin::ElementError("face_angle", "expected 'face_angle' (the face's direction on the follower, deg) with face: flat");
+    check_body(model, p.face_point->body, "face_point", true);
+    if (p.face_point->body != p.follower)
+      throw kin::ElementError("face_point", fmt::format("'face_point': expected a point of the follower '{}', found a point of '{}'",
+                                                        body_name(model, p.follower), body_name(model, p.face_point->body)));
+  }
+}
+
 void check_parameters(const kin::Model& model, const CamFollowerParameters& p) {
   check_body(model, p.cam, "cam", true);
   if (p.path == FollowerPath::translating) {
@@ -88,13 +132,11 @@ void check_parameters(const kin::Model& model, const CamFollowerParameters& p) {
       throw kin::ElementError("relative_to", "expected the follower's angle relative to another link");
     if (p.roller && p.roller->body != p.follower) {
       check_body(model, p.roller->body, "roller", true);
-      const auto name = [&](int b) { return b == kin::kGround ? std::string("ground") : model.bodies()[static_cast<std::size_t>(b)].name; };
       throw kin::ElementError("roller", fmt::format("'roller': expected a point of the follower '{}', found a point of '{}'",
-                                                    name(p.follower), name(p.roller->body)));
+                                                    body_name(model, p.follower), body_name(model, p.roller->body)));
     }
   }
-  if (!(p.roller_radius >= 0.0) || !std::isfinite(p.roller_radius))
-    throw kin::ElementError("roller_radius", fmt::format("'roller_radius': expected a radius >= 0, found {:g} mm", 1e3 * p.roller_radius));
+  check_drawing(model, p);
 }
 
 }  // namespace

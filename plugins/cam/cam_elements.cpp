@@ -32,6 +32,11 @@ std::unique_ptr<kin::Constraint> read_cam_follower(mechanism::ElementReader& rea
     if (keys.has("roller")) p.roller = reader.point("roller");
   }
   p.roller_radius = keys.quantity_or("roller_radius", io::Quantity::length, "mm", 0.0);
+  p.flat_face = keys.choice("face", {"roller", "flat"}, std::string("roller")) == "flat";
+  // Read whenever given, so that the builder says why they do not belong (a roller follower, a
+  // translating one) rather than "unknown key".
+  if (keys.has("face_point")) p.face_point = reader.point("face_point");
+  p.face_angle = keys.optional_quantity("face_angle", io::Quantity::angle, "deg");
   // The solver works in SI: translating lifts stay in metres.
   p.motion = read_motion_segments(keys, !translating, 1.0);
   return elements::make_cam_follower(reader.model(), p);

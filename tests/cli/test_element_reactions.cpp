@@ -161,4 +161,42 @@ TEST(ElementReactions, BadRollerIsPlacedAtItsKey) {
       << c.err;
 }
 
+// The flat face's keys (docs/kin.md) are bad input at their keys: a roller radius with face:
+// flat, a face point on a translating follower, an unknown face; an oscillating flat face runs.
+TEST(ElementReactions, BadFlatFaceIsPlacedAtItsKey) {
+  const std::string example = gearkit::testing::slurp(std::string(GEARKIT_SOURCE_DIR) + "/examples/mechanisms/cam_flat_face.yaml");
+  ASSERT_NE(example.find("    face: flat\n"), std::string::npos);
+  const auto line_of = [&](const std::string& text, const std::string& key) {
+    return std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text.find(key)), '\n') + 1;
+  };
+  const auto expect_error = [&](const std::string& name, const std::string& text, const std::string& key, int column,
+                                const std::string& message) {
+    const auto r = run_gearkit("kin " + write(name, text));
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_NE(r.err.find(fmt::format("{}:{}:{}: {}", name, line_of(text, key), column, message)), std::string::npos) << r.err;
+    EXPECT_EQ(gearkit::testing::count_lines(r.err), 1) << r.err;
+  };
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = example;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  expect_error("flat_roller.yaml", with("    face: flat\n", "    face: flat\n    roller_radius: 5 mm\n"), "roller_radius:", 20,
+               "'roller_radius': expected none with face: flat (the face touches the cam), found 5 mm");
+  expect_error("flat_point.yaml", with("    face: flat\n", "    face: flat\n    face_point: tappet.T\n"), "face_point:", 17,
+               "'face_point': expected none on a translating follower");
+  expect_error("flat_angle.yaml", with("    face: flat\n", "    face: flat\n    face_angle: 10 deg\n"), "face_angle:", 17,
+               "'face_angle': expected none on a translating follower");
+  expect_error("round.yaml", with("    face: flat\n", "    face: round\n"), "face: round", 11, "");
+  // The cam-rocker with a flat face on the rocker instead of its roller.
+  std::string rocker = gearkit::testing::slurp(std::string(GEARKIT_SOURCE_DIR) + "/examples/mechanisms/cam_rocker.yaml");
+  const std::string roller = "    roller: rocker.R\n    roller_radius: 10 mm\n";
+  ASSERT_NE(rocker.find(roller), std::string::npos);
+  rocker.replace(rocker.find(roller), roller.size(), "    face: flat\n    face_point: rocker.R\n    face_angle: 0 deg\n");
+  EXPECT_EQ(run_gearkit("kin " + write("rocker_flat.yaml", rocker) + " --animate " + write("rocker_flat.svg", "")).status, 0);
+  std::string other = rocker;
+  other.replace(other.find("face_point: rocker.R"), 20, "face_point: cam.Oc");
+  expect_error("rocker_face.yaml", other, "face_point: cam", 17, "'face_point': expected a point of the follower 'rocker', found a point of 'cam'");
+}
+
 }  // namespace

@@ -226,5 +226,58 @@ TEST(CamFollower, DrawingGivesTheCamAndTheRoller) {
   EXPECT_EQ(translating->roller_radius, 0.012);
 }
 
+// A flat face (docs/kin.md): translating, the line through `point` across the guide, its
+// direction axis + 90 deg in the guide's frame; oscillating, through `face_point` at
+// `face_angle` in the follower's frame. No roller with it, and the face keys only with face: flat
+// on an oscillating follower.
+TEST(CamFollower, DrawingGivesTheFlatFace) {
+  CamRocker m = cam_rocker(0.0);
+  CamFollowerParameters p;
+  p.cam = m.cam;
+  p.path = FollowerPath::oscillating;
+  p.follower = m.rocker;
+  p.motion = rocker_program();
+  p.flat_face = true;
+  EXPECT_EQ(field_of(m.model, p), "face_point");
+  p.face_point = point(m.model, m.rocker, "E");
+  EXPECT_EQ(field_of(m.model, p), "face_angle");
+  p.face_angle = 30 * kDeg;
+  const auto rocker = make_cam_follower(m.model, p)->drawing().cam;
+  ASSERT_TRUE(rocker && rocker->face);
+  EXPECT_EQ(rocker->contact.body, m.rocker);
+  EXPECT_EQ(rocker->contact.local, Eigen::Vector2d(0.100, 0));
+  EXPECT_EQ(rocker->face->frame, m.rocker);
+  EXPECT_NEAR(rocker->face->direction.x(), std::cos(30 * kDeg), 1e-15);
+  EXPECT_NEAR(rocker->face->direction.y(), std::sin(30 * kDeg), 1e-15);
+  p.face_point = point(m.model, m.cam, "Oc");
+  EXPECT_EQ(field_of(m.model, p), "face_point");
+  p.face_point = point(m.model, m.rocker, "E");
+  p.roller_radius = 0.005;
+  EXPECT_EQ(field_of(m.model, p), "roller_radius");
+  p.roller_radius = 0.0;
+  p.roller = point(m.model, m.rocker, "E");
+  EXPECT_EQ(field_of(m.model, p), "roller");
+  p.roller.reset();
+  p.flat_face = false;
+  EXPECT_EQ(field_of(m.model, p), "face_point");  // a roller follower has no face
+  p.face_point.reset();
+  EXPECT_EQ(field_of(m.model, p), "face_angle");
+  p.face_angle.reset();
+  EXPECT_EQ(field_of(m.model, p), "");
+  p.path = FollowerPath::translating;
+  p.point = point(m.model, m.slider, "F");
+  p.guide = point(m.model, kin::kGround, "G");
+  p.axis = 20 * kDeg;
+  p.flat_face = true;
+  const auto translating = make_cam_follower(m.model, p)->drawing().cam;
+  ASSERT_TRUE(translating && translating->face);
+  EXPECT_EQ(translating->contact.body, m.slider);
+  EXPECT_EQ(translating->face->frame, kin::kGround);
+  EXPECT_NEAR(translating->face->direction.x(), std::cos(110 * kDeg), 1e-15);
+  EXPECT_NEAR(translating->face->direction.y(), std::sin(110 * kDeg), 1e-15);
+  p.face_angle = 0.0;
+  EXPECT_EQ(field_of(m.model, p), "face_angle");  // the face of a translating follower is across its guide
+}
+
 }  // namespace
 }  // namespace gearkit::elements

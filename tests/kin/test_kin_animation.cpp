@@ -306,6 +306,119 @@ TEST(KinAnimation, CamSweptPartlyDrawsOnlyTheTracedPartAndSaysSo) {
 
 namespace {
 
+// A cam turning counter-clockwise about the fixed O lifts a translating flat-faced follower on a
+// vertical guide through O (no offset): base circle R_b = 50 mm, a cycloidal rise of h = 20 mm
+// over beta = 120 deg, a dwell of 60 deg, a cycloidal return over 120 deg and a dwell.
+const char* kFlatFaceCam = R"(ground: {O: [0, 0], G: [0, 0]}
+links:
+  cam: {points: {O: [0, 0]}}
+  follower: {points: {P: [0, 0]}, position: [0, 50]}
+joints:
+  - {name: shaft, type: revolute, at: [cam.O, ground.O]}
+  - {name: guide, type: prismatic, slider: follower.P, guide: ground.G, axis: 90 deg}
+elements:
+  - name: contact
+    type: cam_follower
+    cam: cam
+    follower_type: translating
+    point: follower.P
+    guide: ground.G
+    axis: 90 deg
+    base: 50 mm
+    face: flat
+    motion:
+      - {type: rise, from: 0 deg, to: 120 deg, law: cycloidal, lift: 20 mm}
+      - {type: dwell, from: 120 deg, to: 180 deg}
+      - {type: return, from: 180 deg, to: 300 deg, law: cycloidal}
+      - {type: dwell, from: 300 deg, to: 360 deg}
+drivers:
+  - {name: cam angle, type: angle, link: cam}
+)";
+
+// The cycloidal law (Norton, Design of Machinery, ch. 8, double-dwell cams): s = h (x - sin(2 pi x) /
+// (2 pi)), ds/dtheta = (h / beta) (1 - cos(2 pi x)), x = theta / beta; the return mirrors it.
+// {s, ds/dtheta} in mm and mm/rad.
+std::pair<double, double> flat_face_lift(double theta) {
+  const double h = 20.0, beta = 2.0 * M_PI / 3.0;
+  if (theta <= beta) {
+    const double x = theta / beta;
+    return {h * (x - std::sin(2 * M_PI * x) / (2 * M_PI)), h / beta * (1 - std::cos(2 * M_PI * x))};
+  }
+  if (theta <= M_PI) return {h, 0.0};
+  if (theta <= M_PI + beta) {
+    const double x = (theta - M_PI) / beta;
+    return {h * (1 - x + std::sin(2 * M_PI * x) / (2 * M_PI)), -h / beta * (1 - std::cos(2 * M_PI * x))};
+  }
+  return {0.0, 0.0};
+}
+
+}  // namespace
+
+// Norton (Design of Machinery, ch. 8, radius of curvature of a flat-faced follower): the face y = R_b + s touches the cam at x = ds/dtheta
+// from the follower's axis. The sign, for a cam turning counter-clockwise: in the cam's frame the
+// face's normal points at alpha = 90 deg - theta and the face lies h(alpha) = R_b + s from O, a
+// support function, whose contact point is h u(alpha) + h'(alpha) u'(alpha); h' = -s' and u' =
+// (-1, 0) in the ground frame give the contact at (s', R_b + s). So the profile point drawn for
+// the frame at theta lies at r = sqrt((R_b + s)^2 + s'^2) from O, at the angle atan2(R_b + s, s')
+// - theta in the cam's frame.
+TEST(KinAnimation, FlatFaceProfileIsTheEnvelopeOfTheFace) {
+  const std::string svg = animate_text(kFlatFaceCam, "--sweep 0:360:2");
+  const auto profile = path_points(attribute_before(svg, "cam profile contact", "d"));
+  ASSERT_EQ(profile.size(), 180u);  // 0 to 358 deg: the curve closes
+  const double rb = 50.0;
+  double reach = 0.0, s_max = 0.0, s_min = 0.0;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    const double t = static_cast<double>(i) * 2.0 * M_PI / 180.0;
+    const auto [s, ds] = flat_face_lift(t);
+    const double r = std::hypot(rb + s, ds), alpha = std::atan2(rb + s, ds) - t;
+    const double x = profile[i].first, y = -profile[i].second;  // the group's y points down
+    EXPECT_NEAR(std::hypot(x, y), r, 0.01) << i;
+    EXPECT_NEAR(r * std::remainder(std::atan2(y, x) - alpha, 2 * M_PI), 0.0, 0.01) << i;
+    reach = std::max(reach, rb + s);  // the face's point P is the farthest from O (70 mm)
+    s_max = std::max(s_max, ds);      // the samples at 60 and 240 deg hit the extremes, +-2h/beta
+    s_min = std::min(s_min, ds);
+  }
+  EXPECT_EQ(svg.find("pitch curve contact"), std::string::npos);  // no roller: no pitch curve
+  EXPECT_EQ(svg.find("roller contact"), std::string::npos);
+  // The face: a horizontal segment at y = R_b + s through P = (0, R_b + s), covering the
+  // contact's travel along it (s' from -2h/beta to 2h/beta, +-19.099 mm) and a tenth of the cam's
+  // reach (70 mm, P at full lift) beyond each end. O's place in the picture is the cam group's
+  // translation.
+  const std::size_t group = svg.find("<title>cam contact</title>");
+  ASSERT_NE(group, std::string::npos);
+  const auto origin = transform_values(svg, group, "translate");
+  const std::size_t at = svg.find("<title>face contact</title>");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t values = svg.find("values=\"", at) + 8;
+  std::istringstream in(svg.substr(values, svg.find('"', values) - values));
+  std::vector<std::string> frames;
+  for (std::string f; std::getline(in, f, ';');) frames.push_back(f);
+  ASSERT_EQ(frames.size(), 181u);
+  ASSERT_EQ(origin.size(), 181u);
+  for (const std::size_t k : {0u, 20u, 30u, 45u, 75u, 100u, 120u, 160u}) {
+    const double t = static_cast<double>(k) * 2.0 * M_PI / 180.0;
+    const auto [s, ds] = flat_face_lift(t);
+    double ox = 0, oy = 0, ax = 0, ay = 0, bx = 0, by = 0;
+    ASSERT_EQ(std::sscanf(origin[k].c_str(), "%lf,%lf", &ox, &oy), 2) << origin[k];
+    ASSERT_EQ(std::sscanf(frames[k].c_str(), "M%lf,%lf L%lf,%lf", &ax, &ay, &bx, &by), 4) << frames[k];
+    const double margin = 0.1 * reach;
+    EXPECT_NEAR(ay, oy - (rb + s), 0.01) << k;
+    EXPECT_NEAR(by, oy - (rb + s), 0.01) << k;
+    EXPECT_NEAR(std::min(ax, bx), ox + s_min - margin, 0.01) << k;  // the segment's ends, in either order
+    EXPECT_NEAR(std::max(ax, bx), ox + s_max + margin, 0.01) << k;
+    // The face touches the profile turned by theta: its highest point is on the face, at x = s'.
+    double top = -1e9, top_x = 0.0;
+    for (const auto& [px, py] : profile) {
+      const double gx = px * std::cos(t) + py * std::sin(t), gy = px * std::sin(t) - py * std::cos(t);
+      if (gy > top) top = gy, top_x = gx;
+    }
+    EXPECT_NEAR(top, rb + s, 0.01) << k;
+    EXPECT_NEAR(top_x, ds, 0.01) << k;
+  }
+}
+
+namespace {
+
 // The total turn [rad] of the line "Mx,y Lx,y" animated in the element titled `title`.
 double turned(const std::string& svg, const std::string& title) {
   const std::size_t at = svg.find("<title>" + title + "</title>");

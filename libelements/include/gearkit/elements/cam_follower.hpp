@@ -46,15 +46,26 @@ struct CamFollowerParameters {
   /// Oscillating: the roller centre (or knife tip) on the follower's body, for drawings; none:
   /// the cam is not drawn. Translating: unused, the roller centre is `point`.
   std::optional<kin::BodyPoint> roller;
+  /// A flat-faced follower (drawing only, as the roller): translating, its face is the line
+  /// through `point` across the guide (perpendicular to `axis`); oscillating, the line through
+  /// `face_point` (a point of the follower's body) at `face_angle` [rad] in the follower's frame,
+  /// both required. No roller then (`roller_radius` 0, no `roller`).
+  bool flat_face = false;
+  std::optional<kin::BodyPoint> face_point;
+  std::optional<double> face_angle;
 };
 
 /// Builds a cam follower between bodies of `model`.
 /// @throws kin::ElementError (field "cam", "point", "guide", "follower", "relative_to", "motion",
-///         "roller_radius", "roller") for a body not in the model, a follower on the cam's body,
-///         follower and reference the same body, a motion program libcam rejects (its message),
-///         a negative or non-finite roller radius, or a roller centre not on the follower's body.
+///         "roller_radius", "roller", "face_point", "face_angle") for a body not in the model, a follower on the
+///         cam's body, follower and reference the same body, a motion program libcam rejects (its
+///         message), a negative or non-finite roller radius, a roller centre not on the
+///         follower's body; a flat face with a roller radius > 0 or a roller, an oscillating flat
+///         face without a face point on the follower's body or a face angle, a face point or
+///         angle without a flat face or on a translating follower.
 /// Reaction values: F [N] (translating) or T_f [N m] (oscillating), and T_cam [N m].
-/// drawing(): the cam, the roller centre (`point`, or `roller` when given) and the roller radius.
+/// drawing(): the cam, the roller centre (`point`, or `roller` when given) and the roller radius;
+/// for a flat face, the face's point (`point` or `face_point`) and direction.
 std::unique_ptr<kin::Constraint> make_cam_follower(const kin::Model& model, const CamFollowerParameters& p);
 
 /// make_cam_follower added to `model` as constraint `name`. @returns its index.

@@ -103,10 +103,19 @@ struct ConstraintDrawing {
   /// A cam on body `cam` touching a follower at `contact`: the roller centre (or knife tip) on the
   /// follower's body. The path of `contact` in the cam's frame is the pitch curve; the profile is
   /// its inner envelope offset by `roller_radius` [m] (0: a knife edge, profile = pitch curve).
+  /// With `face`, the follower is flat-faced: its face is the line through `contact` along the
+  /// unit vector `direction`, fixed in the frame of body `frame` (the guide's for a translating
+  /// follower, the follower's for an oscillating one); the profile is the envelope of that line
+  /// seen from the cam, and `roller_radius` is 0.
   struct Cam {
+    struct Face {
+      int frame = kGround;
+      Eigen::Vector2d direction = Eigen::Vector2d::UnitX();
+    };
     int cam = kGround;
     BodyPoint contact;
     double roller_radius = 0.0;
+    std::optional<Face> face;
   };
   /// A member of a gear train turning about the train's central axis, with its number of teeth.
   struct Wheel {

@@ -74,7 +74,8 @@ inline constexpr std::uint64_t kElementAbi = plugin::abi::fingerprint({
     sizeof(kin::ReactionValue), offsetof(kin::ReactionValue, value), sizeof(kin::Constraint),
     sizeof(kin::ElementError), sizeof(kin::ConstraintDrawing), offsetof(kin::ConstraintDrawing, central),
     offsetof(kin::ConstraintDrawing, arm), sizeof(kin::ConstraintDrawing::Cam),
-    offsetof(kin::ConstraintDrawing::Cam, roller_radius), sizeof(kin::ConstraintDrawing::Wheel)});
+    offsetof(kin::ConstraintDrawing::Cam, roller_radius), offsetof(kin::ConstraintDrawing::Cam, face),
+    sizeof(kin::ConstraintDrawing::Cam::Face), sizeof(kin::ConstraintDrawing::Wheel)});
 #pragma GCC diagnostic pop
 
 }  // namespace gearkit::mechanism

@@ -41,7 +41,7 @@ namespace gearkit::plugin {
 
 /// 3: gearkit::plugin namespace, host services, stamp section, ABI fingerprints, element readers
 /// and element reactions. 4: kin::Constraint::drawing (a new virtual function: the vtable the
-/// host calls changed, which no fingerprint of sizes sees).
+/// host calls changed, which no fingerprint of sizes sees), with the flat face of a cam's drawing.
 inline constexpr std::uint32_t kApiVersion = 4;
 
 struct PluginInfo {
