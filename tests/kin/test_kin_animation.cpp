@@ -419,6 +419,65 @@ TEST(KinAnimation, FlatFaceProfileIsTheEnvelopeOfTheFace) {
 
 namespace {
 
+// A cam turning counter-clockwise about O_c = (0, 0) swings a rocker pivoted at O_f = (100, 0)
+// mm whose flat face runs through the pivot along the rocker's x axis, at 150 deg + psi(theta):
+// psi a cycloidal rise of 10 deg over 120 deg, a dwell of 60 deg, the same return and a dwell.
+const char* kFlatFaceRocker = R"(ground: {Oc: [0, 0], Of: [100, 0]}
+links:
+  cam: {points: {Oc: [0, 0]}}
+  rocker: {points: {Of: [0, 0], E: [120, 0]}, angle: 150 deg}
+joints:
+  - {name: shaft, type: revolute, at: [cam.Oc, ground.Oc]}
+  - {name: pivot, type: revolute, at: [rocker.Of, ground.Of]}
+elements:
+  - name: contact
+    type: cam_follower
+    cam: cam
+    follower_type: oscillating
+    follower: rocker
+    base: 150 deg
+    face: flat
+    face_point: rocker.Of
+    face_angle: 0 deg
+    motion:
+      - {type: rise, from: 0 deg, to: 120 deg, law: cycloidal, lift: 10 deg}
+      - {type: dwell, from: 120 deg, to: 180 deg}
+      - {type: return, from: 180 deg, to: 300 deg, law: cycloidal}
+      - {type: dwell, from: 300 deg, to: 360 deg}
+drivers:
+  - {name: cam angle, type: angle, link: cam}
+)";
+
+}  // namespace
+
+// Kennedy's theorem (Norton, Design of Machinery, ch. 6, instant centres; ch. 8 for the cam):
+// the common normal at the contact of cam and rocker passes through their relative instant
+// centre I on the line of centres, where both have the same velocity: omega_c I = omega_f (I -
+// O_f), so I_x = -psi' a / (1 - psi') with a = 100 mm and psi' = dpsi/dtheta (cycloidal, in the
+// lift's scale: the rise's law of flat_face_lift with h = 10 deg). The normal is perpendicular
+// to the face, so the contact is the foot of the perpendicular from I on the face's line.
+TEST(KinAnimation, FlatFaceOfARockerTouchesAtTheInstantCentresFoot) {
+  const std::string svg = animate_text(kFlatFaceRocker, "--sweep 0:360:2");
+  const auto profile = path_points(attribute_before(svg, "cam profile contact", "d"));
+  ASSERT_EQ(profile.size(), 180u);
+  const double a = 100.0, scale = (10.0 * M_PI / 180.0) / 20.0;  // flat_face_lift's h = 20 -> 10 deg
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    const double t = static_cast<double>(i) * 2.0 * M_PI / 180.0;
+    const auto [s, ds] = flat_face_lift(t);
+    const double psi = s * scale, dpsi = ds * scale, phi = 150.0 * M_PI / 180.0 + psi;
+    const double ix = -dpsi * a / (1.0 - dpsi);
+    const double along = (ix - a) * std::cos(phi);  // (I - O_f) . d, d = (cos phi, sin phi)
+    const double cx = a + along * std::cos(phi), cy = along * std::sin(phi);
+    // In the cam's frame (turned by theta), the group's y pointing down.
+    const double x = cx * std::cos(t) + cy * std::sin(t), y = -cx * std::sin(t) + cy * std::cos(t);
+    EXPECT_NEAR(profile[i].first, x, 0.01) << i;
+    EXPECT_NEAR(-profile[i].second, y, 0.01) << i;
+  }
+  EXPECT_NE(svg.find("<title>face contact</title>"), std::string::npos);
+}
+
+namespace {
+
 // The total turn [rad] of the line "Mx,y Lx,y" animated in the element titled `title`.
 double turned(const std::string& svg, const std::string& title) {
   const std::size_t at = svg.find("<title>" + title + "</title>");
