@@ -168,6 +168,16 @@ std::string field_of(const kin::Model& model, const CamFollowerParameters& q) {
   return "";
 }
 
+// The cam-rocker's follower as the drawing tests start from: the program only.
+CamFollowerParameters rocker_parameters(const CamRocker& m) {
+  CamFollowerParameters p;
+  p.cam = m.cam;
+  p.path = FollowerPath::oscillating;
+  p.follower = m.rocker;
+  p.motion = rocker_program();
+  return p;
+}
+
 TEST(CamFollower, ImpossibleParametersNameTheirField) {
   CamRocker m = cam_rocker(0.0);
   CamFollowerParameters p;
@@ -202,11 +212,7 @@ TEST(CamFollower, ImpossibleParametersNameTheirField) {
 // follower, `point` for a translating one) and the roller radius, as given.
 TEST(CamFollower, DrawingGivesTheCamAndTheRoller) {
   CamRocker m = cam_rocker(0.0);
-  CamFollowerParameters p;
-  p.cam = m.cam;
-  p.path = FollowerPath::oscillating;
-  p.follower = m.rocker;
-  p.motion = rocker_program();
+  CamFollowerParameters p = rocker_parameters(m);
   EXPECT_FALSE(make_cam_follower(m.model, p)->drawing().cam);  // no roller point: nothing to draw
   p.roller = point(m.model, m.rocker, "E");
   p.roller_radius = 0.012;
@@ -232,11 +238,7 @@ TEST(CamFollower, DrawingGivesTheCamAndTheRoller) {
 // on an oscillating follower.
 TEST(CamFollower, DrawingGivesTheFlatFace) {
   CamRocker m = cam_rocker(0.0);
-  CamFollowerParameters p;
-  p.cam = m.cam;
-  p.path = FollowerPath::oscillating;
-  p.follower = m.rocker;
-  p.motion = rocker_program();
+  CamFollowerParameters p = rocker_parameters(m);
   p.flat_face = true;
   EXPECT_EQ(field_of(m.model, p), "face_point");
   p.face_point = point(m.model, m.rocker, "E");
