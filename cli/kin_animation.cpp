@@ -16,10 +16,6 @@ namespace gearkit::cli {
 
 namespace {
 
-Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
-  return kin::Model::point_position(q, {body, local});
-}
-
 // At most 240 frames: the browser interpolates between them.
 std::vector<const KinPosition*> select_frames(const KinAnalysis& analysis) {
   std::vector<const KinPosition*> frames;

@@ -17,16 +17,10 @@ namespace gearkit::cli {
 
 namespace {
 
-Eigen::Vector2d at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
-  return kin::Model::point_position(q, {body, local});
-}
-
-double angle_of(const Eigen::VectorXd& q, int body) { return body == kin::kGround ? 0.0 : q(3 * body + 2); }
-
 // The pose of a body's frame in SVG units: the origin and the angle in degrees, negative for a
 // counter-clockwise model angle since the SVG's y axis points down.
 std::string translate_value(const Eigen::VectorXd& q, int body, const AnimationCanvas& c) {
-  const Eigen::Vector2d o = at(q, body, Eigen::Vector2d::Zero());
+  const Eigen::Vector2d o = point_at(q, body, Eigen::Vector2d::Zero());
   return fmt::format("{:.3f},{:.3f}", c.X(o.x()), c.Y(o.y()));
 }
 std::string rotate_value(const Eigen::VectorXd& q, int body) {
@@ -101,7 +95,7 @@ Eigen::Vector2d velocity_of(const Eigen::VectorXd& qd, const Eigen::VectorXd& q,
 // v_C), while phi, the angle of n from the cam, changes at w_f - w_cam.
 FaceLine face_line(const KinPosition& f, const kin::ConstraintDrawing::Cam& cam) {
   const Eigen::VectorXd& q = f.q;
-  const Eigen::Vector2d c = at(q, cam.cam, Eigen::Vector2d::Zero()), P = at(q, cam.contact.body, cam.contact.local);
+  const Eigen::Vector2d c = point_at(q, cam.cam, Eigen::Vector2d::Zero()), P = point_at(q, cam.contact.body, cam.contact.local);
   const Eigen::Vector2d d = kin::rotate(angle_of(q, cam.face->frame), cam.face->direction), n = kin::perp(d);
   const double theta = angle_of(q, cam.cam);
   FaceLine line{kin::rotate(-theta, n), kin::rotate(-theta, P - c), kin::rotate(-theta, d), n.dot(P - c)};
@@ -162,7 +156,7 @@ std::string roller_element(const CamPicture& cam, const std::vector<const KinPos
   if (!(cam.drawing.roller_radius > 0)) return {};
   std::vector<std::string> cx, cy;
   for (const KinPosition* f : frames) {
-    const Eigen::Vector2d p = at(f->q, cam.drawing.contact.body, cam.drawing.contact.local);
+    const Eigen::Vector2d p = point_at(f->q, cam.drawing.contact.body, cam.drawing.contact.local);
     cx.push_back(fmt::format("{:.3f}", c.X(p.x())));
     cy.push_back(fmt::format("{:.3f}", c.Y(p.y())));
   }
@@ -181,7 +175,7 @@ std::string roller_element(const CamPicture& cam, const std::vector<const KinPos
 std::string face_element(const CamPicture& cam, const std::vector<const KinPosition*>& frames, const AnimationCanvas& c, double duration) {
   std::vector<std::string> d;
   for (const KinPosition* f : frames) {
-    const Eigen::Vector2d P = at(f->q, cam.drawing.contact.body, cam.drawing.contact.local);
+    const Eigen::Vector2d P = point_at(f->q, cam.drawing.contact.body, cam.drawing.contact.local);
     const Eigen::Vector2d u = kin::rotate(angle_of(f->q, cam.drawing.face->frame), cam.drawing.face->direction);
     const Eigen::Vector2d a = P + cam.face_span->first * u, b = P + cam.face_span->second * u;
     d.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(a.x()), c.Y(a.y()), c.X(b.x()), c.Y(b.y())));
@@ -212,8 +206,8 @@ std::vector<CamPicture> cam_pictures(const kin::Model& model, const std::vector<
         break;
       }
       p.turned = std::max(p.turned, turned);
-      const Eigen::Vector2d origin = at(f.q, cam->cam, Eigen::Vector2d::Zero());
-      p.pitch.push_back(kin::rotate(-angle_of(f.q, cam->cam), at(f.q, cam->contact.body, cam->contact.local) - origin));
+      const Eigen::Vector2d origin = point_at(f.q, cam->cam, Eigen::Vector2d::Zero());
+      p.pitch.push_back(kin::rotate(-angle_of(f.q, cam->cam), point_at(f.q, cam->contact.body, cam->contact.local) - origin));
       if (cam->face) lines.push_back(face_line(f, *cam));
     }
     const std::optional<kin::BodyPoint> axis = pivot_of(model, cam->cam);

@@ -16,12 +16,6 @@ namespace gearkit::cli {
 
 namespace {
 
-Eigen::Vector2d at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
-  return kin::Model::point_position(q, {body, local});
-}
-
-double angle_of(const Eigen::VectorXd& q, int body) { return body == kin::kGround ? 0.0 : q(3 * body + 2); }
-
 std::string animate(const char* attribute, const std::vector<std::string>& values, double duration) {
   if (values.size() < 2) return "";
   return fmt::format("<animate attributeName=\"{}\" dur=\"{:.3f}s\" repeatCount=\"indefinite\" values=\"{}\"/>", attribute,
@@ -76,7 +70,7 @@ std::string slider_elements(const kin::Model& model, const std::vector<const Kin
     std::vector<std::string> guide, slider;
     double lo = 1e300, hi = -1e300;  // the slider's travel along the guide
     for (const KinPosition* f : frames) {
-      const Eigen::Vector2d g = at(f->q, p->guide().body, p->guide().local), s = at(f->q, p->slider().body, p->slider().local);
+      const Eigen::Vector2d g = point_at(f->q, p->guide().body, p->guide().local), s = point_at(f->q, p->slider().body, p->slider().local);
       const double a = angle_of(f->q, p->guide().body);
       const Eigen::Vector2d u = Eigen::Rotation2Dd(a) * p->axis_local().normalized();
       const double t = (s - g).dot(u);
@@ -90,7 +84,7 @@ std::string slider_elements(const kin::Model& model, const std::vector<const Kin
       slider.push_back(pts);
     }
     for (const KinPosition* f : frames) {
-      const Eigen::Vector2d g = at(f->q, p->guide().body, p->guide().local);
+      const Eigen::Vector2d g = point_at(f->q, p->guide().body, p->guide().local);
       const Eigen::Vector2d u = Eigen::Rotation2Dd(angle_of(f->q, p->guide().body)) * p->axis_local().normalized();
       const Eigen::Vector2d a = g + (lo - 2 * block) * u, b = g + (hi + 2 * block) * u;
       guide.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(a.x()), c.Y(a.y()), c.X(b.x()), c.Y(b.y())));
@@ -132,7 +126,7 @@ std::string spring_elements(const kin::Model& model, const std::vector<const Kin
     if (frames.empty()) continue;
     std::vector<std::string> values;
     for (const KinPosition* f : frames)
-      values.push_back(zigzag(c, at(f->q, s.a.body, s.a.local), at(f->q, s.b.body, s.b.local), 4.0 * c.stroke));
+      values.push_back(zigzag(c, point_at(f->q, s.a.body, s.a.local), point_at(f->q, s.b.body, s.b.local), 4.0 * c.stroke));
     svg += fmt::format("<polyline points=\"{}\" fill=\"none\" stroke=\"#2a7f2a\" stroke-width=\"{:.3f}\" "
                        "stroke-linejoin=\"round\"><title>spring {}</title>{}</polyline>\n",
                        values.front(), 0.6 * c.stroke, io::xml_escape(s.name), animate("points", values, duration));
@@ -177,7 +171,7 @@ std::string gear_svg(const std::vector<const KinPosition*>& frames, const Animat
                      double r, double duration, const std::string& name) {
   std::vector<std::string> cx, cy, mark;
   for (const KinPosition* f : frames) {
-    const Eigen::Vector2d o = at(f->q, axis.body, axis.local);
+    const Eigen::Vector2d o = point_at(f->q, axis.body, axis.local);
     const double a = angle_of(f->q, axis.body);
     const Eigen::Vector2d p = o + 0.85 * r * Eigen::Vector2d(std::cos(a), std::sin(a)), q = o + 1.12 * r * Eigen::Vector2d(std::cos(a), std::sin(a));
     cx.push_back(fmt::format("{:.3f}", c.X(o.x())));
@@ -204,7 +198,7 @@ std::vector<GearCircle> gear_circles(const kin::Model& model, const std::vector<
     const std::optional<double> k = mesh_factor(frames, b[1], b[0], b[2]);
     if (!a1 || !a2 || !k || !(1.0 + *k > 1e-9)) continue;
     const Eigen::VectorXd& q = frames.front()->q;
-    const double a = (at(q, a1->body, a1->local) - at(q, a2->body, a2->local)).norm();
+    const double a = (point_at(q, a1->body, a1->local) - point_at(q, a2->body, a2->local)).norm();
     // External: r1 + r2 = a, r1 = k r2; internal (k < 0, gear 2 the ring): r2 - r1 = a, r1 = -k r2.
     // Both give r2 = a / (1 + k).
     const double r2 = a / (1.0 + *k), r1 = std::abs(*k) * r2;
@@ -225,7 +219,7 @@ namespace {
 
 // The world point `world` [m] in the frame of `body` at q.
 Eigen::Vector2d local_of(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& world) {
-  return kin::rotate(-angle_of(q, body), world - at(q, body, Eigen::Vector2d::Zero()));
+  return kin::rotate(-angle_of(q, body), world - point_at(q, body, Eigen::Vector2d::Zero()));
 }
 
 std::string body_name(const kin::Model& model, int body) {
@@ -253,13 +247,13 @@ std::vector<TrainPicture> train_pictures(const kin::Model& model, const std::vec
     if (!axis && d.arm) axis = pivot_of(model, *d.arm);
     if (!axis) continue;
     const Eigen::VectorXd& q = frames.front()->q;
-    const Eigen::Vector2d o = at(q, axis->body, axis->local);
+    const Eigen::Vector2d o = point_at(q, axis->body, axis->local);
     const int arm = d.arm.value_or(kin::kGround);
     TrainPicture t{mc.name, {}, {arm, local_of(q, arm, o)}, {}};
     auto [end, reach] = arm_reach(model, arm, t.arm_axis.local);
     if (!(reach > 1e-9)) {  // an arm with no point off the axis: a reach from the model's size
       for (std::size_t b = 0; b < model.bodies().size(); ++b)
-        for (const auto& [name, local] : model.bodies()[b].points) reach = std::max(reach, 0.3 * (at(q, static_cast<int>(b), local) - o).norm());
+        for (const auto& [name, local] : model.bodies()[b].points) reach = std::max(reach, 0.3 * (point_at(q, static_cast<int>(b), local) - o).norm());
       reach = reach > 1e-9 ? reach : 0.05;
       end = t.arm_axis.local + Eigen::Vector2d(reach, 0.0);
     }
@@ -281,7 +275,7 @@ std::string train_elements(const std::vector<TrainPicture>& trains, const std::v
     for (const GearCircle& g : t.central) svg += gear_svg(frames, c, g.axis, g.r, duration, g.name);
     std::vector<std::string> d;
     for (const KinPosition* f : frames) {
-      const Eigen::Vector2d a = at(f->q, t.arm_axis.body, t.arm_axis.local), b = at(f->q, t.arm_end.body, t.arm_end.local);
+      const Eigen::Vector2d a = point_at(f->q, t.arm_axis.body, t.arm_axis.local), b = point_at(f->q, t.arm_end.body, t.arm_end.local);
       d.push_back(fmt::format("M{:.3f},{:.3f} L{:.3f},{:.3f}", c.X(a.x()), c.Y(a.y()), c.X(b.x()), c.Y(b.y())));
     }
     svg += fmt::format("<path d=\"{}\" stroke=\"#b06000\" stroke-width=\"{:.3f}\" stroke-linecap=\"round\"><title>arm {}</title>{}</path>\n",
@@ -312,7 +306,7 @@ std::vector<Box> label_obstacles(const kin::Model& model, const Eigen::VectorXd&
     out.push_back({c.X(p.x()) - 3 * s, c.Y(p.y()) - 1.2 * s, c.X(p.x()) + 3 * s, c.Y(p.y()) + 5.1 * s});
   for (std::size_t b = 0; b < model.bodies().size(); ++b)
     for (const auto& [name, local] : model.bodies()[b].points) {
-      const Eigen::Vector2d p = at(q, static_cast<int>(b), local);
+      const Eigen::Vector2d p = point_at(q, static_cast<int>(b), local);
       out.push_back({c.X(p.x()) - 1.8 * s, c.Y(p.y()) - 1.8 * s, c.X(p.x()) + 1.8 * s, c.Y(p.y()) + 1.8 * s});
       out.push_back(text_box(c.X(p.x()) + 2 * s, c.Y(p.y()) - 2 * s, size, name.size(), 0.62));
     }
@@ -331,9 +325,9 @@ std::vector<Eigen::Vector2d> link_label_positions(const kin::Model& model, const
     if (body.points.empty()) continue;
     // Anchors: the middle of the link's points, then halfway from it to each point.
     std::vector<Eigen::Vector2d> anchors{Eigen::Vector2d::Zero()};
-    for (const auto& [name, local] : body.points) anchors.front() += at(q, static_cast<int>(b), local);
+    for (const auto& [name, local] : body.points) anchors.front() += point_at(q, static_cast<int>(b), local);
     anchors.front() /= static_cast<double>(body.points.size());
-    for (const auto& [name, local] : body.points) anchors.push_back(0.5 * (anchors.front() + at(q, static_cast<int>(b), local)));
+    for (const auto& [name, local] : body.points) anchors.push_back(0.5 * (anchors.front() + point_at(q, static_cast<int>(b), local)));
     const double w = 0.72 * size * static_cast<double>(body.name.size());
     std::vector<Eigen::Vector2d> candidates;  // below right, above right, below left, above left
     for (const Eigen::Vector2d& a : anchors)
@@ -381,7 +375,7 @@ std::string name_labels(const kin::Model& model, const std::vector<const KinPosi
     for (const auto& [name, local] : body.points) {
       std::vector<std::string> px, py;
       for (const KinPosition* f : frames) {
-        const Eigen::Vector2d p = at(f->q, static_cast<int>(b), local);
+        const Eigen::Vector2d p = point_at(f->q, static_cast<int>(b), local);
         px.push_back(fmt::format("{:.3f}", c.X(p.x()) + 2 * c.stroke));
         py.push_back(fmt::format("{:.3f}", c.Y(p.y()) - 2 * c.stroke));
       }
@@ -404,7 +398,7 @@ std::string output_traces(const mechanism::Mechanism& mech, const KinAnalysis& a
     done.emplace_back(o.point.body, o.point.local);
     std::string d;
     for (const KinPosition& p : analysis.positions) {
-      const Eigen::Vector2d v = at(p.q, o.point.body, o.point.local);
+      const Eigen::Vector2d v = point_at(p.q, o.point.body, o.point.local);
       d += fmt::format("{}{:.3f},{:.3f}", d.empty() ? "M" : " L", c.X(v.x()), c.Y(v.y()));
     }
     svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#a000a0\" stroke-width=\"{:.3f}\" stroke-dasharray=\"{:.3f} {:.3f}\">"

@@ -13,6 +13,13 @@
 
 namespace gearkit::cli {
 
+/// Where a body's point is at coordinates q [m] (the ground's for kin::kGround).
+inline Eigen::Vector2d point_at(const Eigen::VectorXd& q, int body, const Eigen::Vector2d& local) {
+  return kin::Model::point_position(q, {body, local});
+}
+/// A body's angle at coordinates q [rad] (0 for kin::kGround).
+inline double angle_of(const Eigen::VectorXd& q, int body) { return body == kin::kGround ? 0.0 : q(3 * body + 2); }
+
 /// The SVG viewport of an animation: model metres to SVG units (y down).
 struct AnimationCanvas {
   double x0 = 0, y1 = 0, margin = 0, scale = 1000.0, stroke = 1.0;

@@ -40,9 +40,6 @@ SourceMark source_mark(const yaml_mark_t& m, const std::string& name) {
   return {name, static_cast<int>(m.line) + 1, static_cast<int>(m.column) + 1};
 }
 
-// A plain scalar yaml-cpp reads as null (its IsNullString).
-bool is_null_text(std::string_view s) { return s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL"; }
-
 // The nodes of one document, in the order of NodeBuilder's events: a scalar joins its
 // collection at once, a collection when it ends; a mapping's key waits for its value.
 class DocumentBuilder {
@@ -51,12 +48,12 @@ class DocumentBuilder {
 
   void scalar(const yaml_event_t& e) {
     const auto& s = e.data.scalar;
-    const std::string_view value(reinterpret_cast<const char*>(s.value), s.length);
+    std::string value(reinterpret_cast<const char*>(s.value), s.length);
     YAML::detail::node& n = create(e, s.anchor);
-    if (!s.tag && s.style == YAML_PLAIN_SCALAR_STYLE && is_null_text(value)) {
+    if (!s.tag && s.style == YAML_PLAIN_SCALAR_STYLE && YAML::IsNullString(value)) {  // ~, null, Null, NULL, nothing
       n.set_null();
     } else {
-      n.set_scalar(std::string(value));
+      n.set_scalar(value);
       n.set_tag(s.tag ? tag_text(s.tag) : s.style == YAML_PLAIN_SCALAR_STYLE ? "?" : "!");
     }
     attach(n);
@@ -146,7 +143,7 @@ struct Parser {
   yaml_parser_t parser{};
   yaml_event_t event{};
   bool has_event = false;
-  Parser(std::string_view text) {
+  explicit Parser(std::string_view text) {
     if (!yaml_parser_initialize(&parser)) throw std::bad_alloc();
     yaml_parser_set_input_string(&parser, reinterpret_cast<const unsigned char*>(text.data()), text.size());
   }
