@@ -151,7 +151,7 @@ CommandLine split_command_line(int argc, char** argv) {
 po::variables_map parse_global_options(const std::vector<std::string>& args, const po::options_description& global) {
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(args).options(global).run(), vm);
+    po::store(po::command_line_parser(args).options(global).style(gearkit::io::command_line_style()).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
     throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", gearkit::io::option_error_message(e, global, args)));

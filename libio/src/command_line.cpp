@@ -80,8 +80,8 @@ std::optional<double> quantity_option(const po::variables_map& vm, const char* n
   const std::string option = fmt::format("--{}", name);
   const std::string& text = vm[name].as<std::string>();
   try {
-    if (!range) return parse_quantity_si(text, q, default_unit);
-    const double si = parse_quantity_si_any_size(text, q, default_unit);
+    if (!range) return parse_option_quantity_si(text, q, default_unit);
+    const double si = parse_option_quantity_si_any_size(text, q, default_unit);
     const double factor = default_unit.empty() ? 1.0 : unit_factor_si(default_unit, q);
     const MagnitudeRange sizes = magnitude_range(q);
     if (const auto problem = range_problem(si / factor, *range, sizes.smallest / factor, sizes.largest / factor))
@@ -227,6 +227,51 @@ void reject_empty_values(const po::variables_map& vm, const po::options_descript
 
 }  // namespace
 
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  // d[i][j]: distance between the first i characters of a and the first j of b, three rows kept.
+  std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        current[j] = std::min(current[j], before[j - 2] + 1);
+    }
+    before.swap(previous);
+    previous.swap(current);
+  }
+  return previous[b.size()];
+}
+
+std::optional<std::string> nearest_option(std::string_view typed, const po::options_description& desc) {
+  const std::string_view name = typed.substr(std::min(typed.size(), typed.find_first_not_of('-')));
+  const std::size_t eq = name.find('=');
+  const std::string_view word = name.substr(0, eq);
+  if (word.size() < 2) return std::nullopt;  // "-x": too short to say what was meant
+  const std::size_t threshold = std::max<std::size_t>(1, word.size() / 3);
+  std::optional<std::string> nearest;
+  std::size_t best = threshold + 1;
+  std::vector<std::string> extensions;
+  for (const auto& option : desc.options()) {
+    const std::string& candidate = option->long_name();
+    if (candidate.empty()) continue;
+    if (const std::size_t d = edit_distance(word, candidate); d < best) {
+      best = d;
+      nearest = candidate;
+    }
+    if (candidate.starts_with(word)) extensions.push_back(candidate);
+  }
+  if (!nearest && extensions.size() == 1) nearest = extensions.front();
+  if (!nearest) return std::nullopt;
+  return "--" + *nearest;
+}
+
+int command_line_style() {
+  return po::command_line_style::default_style & ~po::command_line_style::allow_guessing;
+}
+
 std::string option_error_message(const po::error& e, const po::options_description& desc,
                                  const std::vector<std::string>& args) {
   const auto* named = dynamic_cast<const po::error_with_option_name*>(&e);
@@ -248,8 +293,11 @@ std::string option_error_message(const po::error& e, const po::options_descripti
     return fmt::format("{}: expected it once, found it {} times", where, std::max<std::size_t>(2, occurrences(args, option)));
   if (dynamic_cast<const po::required_option*>(&e)) return fmt::format("{}: expected it (it is required), found none", where);
   if (dynamic_cast<const po::multiple_values*>(&e)) return fmt::format("{}: expected one value, found several", where);
-  if (dynamic_cast<const po::unknown_option*>(&e))
-    return fmt::format("{}: expected an option listed by --help, found an unknown one", where);
+  if (dynamic_cast<const po::unknown_option*>(&e)) {
+    const std::optional<std::string> meant = nearest_option(option, desc);
+    return fmt::format("{}: expected an option listed by --help, found an unknown one{}", where,
+                       meant ? fmt::format("; did you mean {}?", quote(*meant)) : std::string());
+  }
   if (const auto* ambiguous = dynamic_cast<const po::ambiguous_option*>(&e)) {
     std::vector<std::string> names;
     for (const auto& a : ambiguous->alternatives()) names.push_back(quote(dashed(a)));
@@ -269,7 +317,8 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
                         std::string_view usage, std::ostream& out) {
   const std::vector<std::string> positionals = positional_names(positional);
   try {
-    po::store(po::command_line_parser(args).options(desc).positional(positional).run(), vm);
+    po::store(po::command_line_parser(args).options(desc).positional(positional).style(command_line_style()).run(),
+              vm);
     if (vm.count("help")) {
       out << "usage: " << usage << "\n\n" << desc << "\n";
       return false;

@@ -385,4 +385,42 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
   return si_value;
 }
 
+bool option_needs_unit(Quantity q) {
+  return q == Quantity::power || q == Quantity::torque || q == Quantity::angular_velocity || q == Quantity::velocity;
+}
+
+std::string_view unit_examples(Quantity q) {
+  switch (q) {
+    case Quantity::power: return "7.5kW, 7500 W";
+    case Quantity::torque: return "36.6 N*m, 0.5 kN*m";
+    case Quantity::angular_velocity: return "1450rpm, 152 rad/s";
+    case Quantity::velocity: return "200 mm/min, 0.5 m/s";
+    default: return "";
+  }
+}
+
+namespace {
+
+/// Refuses a bare number for a quantity that option_needs_unit.
+void check_option_unit(std::string_view text, Quantity expected) {
+  if (!option_needs_unit(expected)) return;
+  const std::string_view t = trim(text);
+  const std::size_t n = scan_number(t);
+  if (n > 0 && n == t.size())
+    throw QuantityError(fmt::format("expected {} with its unit ({}), found {}", describe(expected), unit_examples(expected),
+                                    quoted(t)));
+}
+
+}  // namespace
+
+double parse_option_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit) {
+  check_option_unit(text, expected);
+  return parse_quantity_si(text, expected, default_unit);
+}
+
+double parse_option_quantity_si_any_size(std::string_view text, Quantity expected, std::string_view default_unit) {
+  check_option_unit(text, expected);
+  return parse_quantity_si_any_size(text, expected, default_unit);
+}
+
 }  // namespace gearkit::io

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -34,6 +35,42 @@ TEST(Quantity, BareNumberTakesTheFieldsDefaultUnit) {
   EXPECT_DOUBLE_EQ(parse_quantity_si("20", Quantity::angle, "deg"), 20 * pi / 180);
   EXPECT_DOUBLE_EQ(parse_quantity_si("1500", Quantity::angular_velocity, "rpm"), 50 * pi);
   EXPECT_DOUBLE_EQ(parse_quantity_si("2.5", Quantity::dimensionless, ""), 2.5);
+}
+
+// Issue 25, 1: `train --power sun=7.5` was 7.5 W and `gear --power 7.5` 7.5 kW. An option's power,
+// torque or speed now needs its unit; the same text with a unit gives the same SI value as a model
+// file (1 kW = 1000 W; 1 rpm = 2 pi / 60 rad/s; SI brochure).
+TEST(Quantity, AnOptionsPowerTorqueOrSpeedNeedsItsUnit) {
+  using gearkit::io::parse_option_quantity_si;
+  using gearkit::io::parse_option_quantity_si_any_size;
+  const auto message = [](std::string_view text, Quantity q) {
+    try {
+      parse_option_quantity_si(text, q, "");
+    } catch (const QuantityError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message("7.5", Quantity::power), "expected a power with its unit (7.5kW, 7500 W), found '7.5'");
+  EXPECT_EQ(message(" 7.5 ", Quantity::power), "expected a power with its unit (7.5kW, 7500 W), found '7.5'");
+  EXPECT_EQ(message("40", Quantity::torque), "expected a torque with its unit (36.6 N*m, 0.5 kN*m), found '40'");
+  EXPECT_EQ(message("1450", Quantity::angular_velocity),
+            "expected an angular velocity with its unit (1450rpm, 152 rad/s), found '1450'");
+  EXPECT_EQ(message("200", Quantity::velocity), "expected a velocity with its unit (200 mm/min, 0.5 m/s), found '200'");
+  EXPECT_THROW(parse_option_quantity_si_any_size("1e300", Quantity::velocity, "mm/min"), QuantityError);
+  EXPECT_THROW(parse_option_quantity_si("0", Quantity::power, "W"), QuantityError);  // even 0 needs a unit
+  EXPECT_DOUBLE_EQ(parse_option_quantity_si("7.5kW", Quantity::power, ""), 7500.0);
+  EXPECT_DOUBLE_EQ(parse_option_quantity_si("7500 W", Quantity::power, ""), 7500.0);
+  EXPECT_DOUBLE_EQ(parse_option_quantity_si("1450rpm", Quantity::angular_velocity, ""), 1450 * 2 * pi / 60);
+  EXPECT_DOUBLE_EQ(parse_option_quantity_si("0.5 kN*m", Quantity::torque, ""), 500.0);
+  // Not a number at all is the parser's own message, not the unit rule's.
+  EXPECT_EQ(message("kW", Quantity::power).find("with its unit"), std::string::npos);
+  // Lengths and angles keep the option's bare-number unit.
+  EXPECT_DOUBLE_EQ(parse_option_quantity_si("3", Quantity::length, "mm"), 0.003);
+  EXPECT_DOUBLE_EQ(parse_option_quantity_si("20", Quantity::angle, "deg"), 20 * pi / 180);
+  EXPECT_TRUE(gearkit::io::option_needs_unit(Quantity::power));
+  EXPECT_FALSE(gearkit::io::option_needs_unit(Quantity::length));
+  EXPECT_FALSE(gearkit::io::option_needs_unit(Quantity::time));
 }
 
 TEST(Quantity, NumberForms) {

@@ -45,8 +45,10 @@ po::typed_value<double>* number_in(const OptionRange& range);
 
 /// The SI value of a quantity option given as text ("2 mm", "200 mm/min"), nullopt when it is not
 /// given. `name` without dashes; `default_unit` applies to a bare number and is the unit of
-/// `range`. @throws InputError naming the option for a malformed value, the wrong dimension, a
-/// value outside `range` (checked first) or outside magnitude_range.
+/// `range`, except that a bare number of a quantity that option_needs_unit (power, torque, speed)
+/// is refused (quantity.hpp, parse_option_quantity_si). @throws InputError naming the option for
+/// a malformed value, a bare number refused, the wrong dimension, a value outside `range`
+/// (checked first) or outside magnitude_range.
 std::optional<double> quantity_option(const po::variables_map& vm, const char* name, Quantity q,
                                       std::string_view default_unit, const std::optional<OptionRange>& range = {});
 
@@ -60,9 +62,25 @@ void add_common_options(po::options_description& desc);
 void add_positional_argument(po::options_description& desc, po::positional_options_description& positional,
                              const char* name, const char* value_name, const char* description, bool required = true);
 
+/// The edit distance between `a` and `b` (optimal string alignment: an insertion, a deletion, a
+/// substitution or a swap of two neighbouring characters each count 1; "modlue" to "module" is 1).
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+/// The long option of `desc` that an unknown `typed` ("--modlue", "modlue") was most likely meant
+/// to be, with its dashes ("--module"): the nearest by edit_distance when that is at most a third
+/// of typed's length (at least 1; the first of equals in `desc`'s order), else the only option
+/// whose name begins with `typed` ("--helix" -> "--helix-angle"); nothing when neither exists.
+/// Never used to accept an option: parse_command_line refuses any name it does not know exactly.
+std::optional<std::string> nearest_option(std::string_view typed, const po::options_description& desc);
+
+/// The style every command line is parsed with: Boost's default without allow_guessing, so that an
+/// abbreviation ("--modul" for "--module") is an unknown option, never a silent guess.
+int command_line_style();
+
 /// Parses `args` (the words after the command name). Returns false if --help was given, after
 /// printing "usage" and `desc` to `out`; the caller then returns 0.
-/// @throws InputError for unknown options, missing values, bad --format, extra words.
+/// @throws InputError for unknown options (naming nearest_option when there is one), missing
+///         values, bad --format, extra words.
 bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
                         const po::positional_options_description& positional, po::variables_map& vm,
                         std::string_view usage, std::ostream& out);

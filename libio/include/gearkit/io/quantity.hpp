@@ -72,6 +72,25 @@ double parse_quantity_si(std::string_view text, Quantity expected, std::string_v
 /// message states that range. Anything else should call parse_quantity_si.
 double parse_quantity_si_any_size(std::string_view text, Quantity expected, std::string_view default_unit);
 
+/// The program's one rule for a bare number typed in an option (docs/cli.md, "Quantity options"):
+/// true for the quantities whose unit is not obvious (power, torque, angular velocity, velocity:
+/// `--power 7.5` was 7.5 W in one command and 7.5 kW in another), which an option takes only with
+/// their unit. Model files keep their documented default units.
+bool option_needs_unit(Quantity q);
+
+/// Two accepted spellings of a quantity, for a message or a help line ("7.5kW, 7500 W").
+std::string_view unit_examples(Quantity q);
+
+/// As parse_quantity_si for the value of an option: a bare number of a quantity that
+/// option_needs_unit is refused with "expected a power with its unit (7.5kW, 7500 W), found '7.5'";
+/// any other bare number takes `default_unit`, which must be valid for `expected`. For a quantity
+/// that needs its unit `default_unit` is not used. @throws QuantityError as parse_quantity_si.
+double parse_option_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit);
+
+/// As parse_option_quantity_si without the check against magnitude_range (see
+/// parse_quantity_si_any_size).
+double parse_option_quantity_si_any_size(std::string_view text, Quantity expected, std::string_view default_unit);
+
 /// The SI factor of a unit expression such as "mm", "rpm" or "kg*m^2", checked against
 /// `expected`. @throws QuantityError as parse_quantity_si.
 double unit_factor_si(std::string_view unit, Quantity expected);
