@@ -29,8 +29,8 @@ std::optional<double> animation_speed(const io::po::variables_map& vm, const mec
   const bool angle = mech.drivers.at(static_cast<std::size_t>(driver)).quantity == kin::DriverQuantity::angle;
   double v = 0.0;
   try {
-    v = io::parse_quantity_si(vm["speed"].as<std::string>(), angle ? io::Quantity::angular_velocity : io::Quantity::velocity,
-                              angle ? "rpm" : "mm/s");
+    v = io::parse_option_quantity_si(vm["speed"].as<std::string>(),
+                                     angle ? io::Quantity::angular_velocity : io::Quantity::velocity, "");
   } catch (const io::QuantityError& e) {
     io::fail_option("--speed", e.what());
   }

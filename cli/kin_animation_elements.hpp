@@ -35,8 +35,9 @@ struct AnimationCanvas {
 double loop_seconds(const KinAnalysis& analysis, std::optional<double> speed, std::optional<double> file_speed,
                     std::size_t frames, std::string& text);
 
-/// --speed of `gearkit kin` in SI (rad/s for an angle driver, rpm by default; m/s for a slide,
-/// mm/s by default), or nullopt. @throws io::InputError naming --speed.
+/// --speed of `gearkit kin` in SI (rad/s for an angle driver, m/s for a slide), or nullopt. The
+/// value needs its unit ("60rpm", "200 mm/s"; docs/cli.md, "Quantity options").
+/// @throws io::InputError naming --speed, for a bare number too.
 std::optional<double> animation_speed(const io::po::variables_map& vm, const mechanism::Mechanism& mech, int driver);
 
 /// Slider blocks (animated) on their guide lines (the guide's travel, animated with a moving guide).

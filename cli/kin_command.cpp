@@ -154,8 +154,8 @@ int run_analysis(const mechanism::Mechanism& mech, const KinRequest& r, std::ost
 io::po::options_description kin_options() {
   io::po::options_description desc("gearkit kin options");
   desc.add_options()("file", io::po::value<std::string>()->value_name("FILE.yaml"), "mechanism model (see docs/kin.md)")(
-      "at", io::po::value<std::string>()->value_name("VALUE"), "analyse one position at this input (deg or mm by default)")(
-      "sweep", io::po::value<std::string>()->value_name("START:END:STEP"), "sweep the driver over a range")(
+      "at", io::po::value<std::string>()->value_name("VALUE"), "analyse one position at this input (bare number: deg, or mm for a slide)")(
+      "sweep", io::po::value<std::string>()->value_name("START:END:STEP"), "sweep the driver over a range (bare number: deg, or mm for a slide)")(
       "driver", io::po::value<std::string>()->value_name("NAME"), "which driver --at/--sweep move (default: the first)")(
       "outputs", io::po::value<std::string>()->value_name("A,B,..."), "only these named outputs of the model")(
       "plot", io::po::value<std::string>()->value_name("FILE.svg"), "SVG plot of the outputs against the input")(
@@ -166,7 +166,7 @@ io::po::options_description kin_options() {
       "write a generated mechanism file instead of analysing one (chain:N: N four-bar loops)");
   add_coupler_options(desc);  // kin_coupler.cpp
   desc.add_options()("speed", io::po::value<std::string>()->value_name("SPEED"),
-                     "input speed for the --animate loop time (rpm, or mm/s for a slide; e.g. 60 rpm; default: the driver's speed in the file)")(
+                     "input speed for the --animate loop time (default: the driver's speed in the file) (unit required, e.g. 60rpm)")(
       "branch", io::po::value<std::string>()->value_name("continue|switch"),
       "at a change point (two branches cross, e.g. a parallelogram lying flat): go on along the branch that "
       "continues the motion smoothly (default) or switch to the other");

@@ -10,7 +10,7 @@ namespace {
 int run_hello(gearkit::plugin::CommandContext& context) {
   namespace io = gearkit::io;
   io::po::options_description desc("gearkit hello options");
-  desc.add_options()("name", io::po::value<std::string>()->default_value("world"), "who to greet");
+  desc.add_options()("name", io::po::value<std::string>()->default_value("world")->value_name("NAME"), "who to greet");
   io::add_common_options(desc);
   io::po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, {}, vm, "gearkit hello [--name NAME]", context.out)) return 0;

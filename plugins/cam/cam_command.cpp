@@ -120,22 +120,27 @@ void add_exports(const CamModel& model, const CamResult& result, const io::Repor
 }  // namespace
 
 int run_cam_command(plugin::CommandContext& context) {
-  io::po::options_description desc("gearkit cam options (bare numbers: mm and deg)");
+  io::po::options_description desc("gearkit cam options");
   io::po::positional_options_description positional;
   io::add_positional_argument(desc, positional, "file", "FILE", "cam model (YAML, see docs/cam.md)");
   desc.add_options()
-      ("dxf", io::po::value<std::string>(), "write the cam (profile, pitch curve, base circle, tool path) as DXF R2000")
+      ("dxf", io::po::value<std::string>()->value_name("FILE.dxf"),
+       "write the cam (profile, pitch curve, base circle, tool path) as DXF R2000")
       ("dxf-lines-arcs", "write LINE and ARC entities instead of LWPOLYLINE bulges (still DXF R2000)")
-      ("svg", io::po::value<std::string>(), "write an SVG drawing of the cam and its follower")
-      ("follower-at", io::po::value<std::string>(), "cam angle of the follower in the SVG drawing (default 0 deg)")
-      ("plot", io::po::value<std::string>(), "write the s-v-a-j diagrams as SVG")
-      ("csv", io::po::value<std::string>(), "write profile points, motion diagrams (and forces) as CSV")
-      ("cutter-radius", io::po::value<std::string>(), "cutter radius for the tool path (e.g. 8 mm)")
-      ("dynamics-plot", io::po::value<std::string>(), "write contact force, camshaft torque and Hertz stress as SVG")
-      ("dyn", io::po::value<std::string>(), "write the camshaft as a `gearkit dyn` model (flywheel)")
-      ("gcode", io::po::value<std::string>(), "write the cutter-centre path as G-code (RS-274/NGC)")
-      ("gcode-form", io::po::value<std::string>(), "xy (2-axis mill, G2/G3 arcs; default) or polar (rotary table: X radius, C angle)")
-      ("feed", io::po::value<std::string>(), "G-code feed rate (default 200 mm/min)");
+      ("svg", io::po::value<std::string>()->value_name("FILE.svg"), "write an SVG drawing of the cam and its follower")
+      ("follower-at", io::po::value<std::string>()->value_name("ANGLE"),
+       "cam angle of the follower in the SVG drawing (default 0 deg) (bare number: deg)")
+      ("plot", io::po::value<std::string>()->value_name("FILE.svg"), "write the s-v-a-j diagrams as SVG")
+      ("csv", io::po::value<std::string>()->value_name("FILE.csv"), "write profile points, motion diagrams (and forces) as CSV")
+      ("cutter-radius", io::po::value<std::string>()->value_name("LEN"), "cutter radius for the tool path (bare number: mm)")
+      ("dynamics-plot", io::po::value<std::string>()->value_name("FILE.svg"),
+       "write contact force, camshaft torque and Hertz stress as SVG")
+      ("dyn", io::po::value<std::string>()->value_name("FILE.yaml"), "write the camshaft as a `gearkit dyn` model (flywheel)")
+      ("gcode", io::po::value<std::string>()->value_name("FILE.ngc"), "write the cutter-centre path as G-code (RS-274/NGC)")
+      ("gcode-form", io::po::value<std::string>()->value_name("xy|polar"),
+       "xy (2-axis mill, G2/G3 arcs; default) or polar (rotary table: X radius, C angle)")
+      ("feed", io::po::value<std::string>()->value_name("RATE"),
+       "G-code feed rate (default 200 mm/min) (unit required, e.g. 200mm/min)");
   io::add_common_options(desc);
   io::po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, kUsage, context.out)) return 0;

@@ -42,7 +42,7 @@ constexpr std::string_view kUsage =
     "[--pin-diameter LEN] [--quality Q[,Q2] [--iso1328-edition 2013|1995]] "
     "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW | --din3967 27cd[,26cd]] [--min-backlash LEN] "
     "[--centre-distance-tolerance jsN | --centre-distance-allowances UP,LOW] [--temperature T[,T_HOUSING] "
-    "[--expansion A1,A2,AH]] [--torque1 T | --power P --speed1 N --material1 M --material2 M "
+    "[--expansion A1,A2,AH]] [--torque1 TORQUE | --power POWER --speed1 SPEED --material1 M --material2 M "
     "[--method iso6336|agma|lewis-hertz] [--factor NAME=VALUE]...] [--format text|json|csv|md|html] [--svg FILE] [--dxf FILE] "
     "[--draw pair|gear1|gear2] [--tolerance LEN] [--cutter-teeth N] [--cutter-tip-radius LEN]\n       gearkit gear size --help";
 

@@ -78,13 +78,13 @@ void add_gear_options(io::po::options_description& desc) {
       ("ratio", po::value<std::string>()->value_name("U"),
        "gear ratio u = z2/z1 (4 for a reduction 1/4): with --z1 or --z2 it gives the other; with neither, the teeth of "
        "the unshifted pair that fits --centre-distance")
-      ("module", po::value<std::string>()->value_name("LEN"), "module (normal; transverse with --transverse), mm")
-      ("pressure-angle", po::value<std::string>()->value_name("ANGLE"), "pressure angle, deg (default 20)")
-      ("helix-angle", po::value<std::string>()->value_name("ANGLE"), "helix angle, deg (default 0: spur)")
+      ("module", po::value<std::string>()->value_name("LEN"), "module (normal; transverse with --transverse) (bare number: mm)")
+      ("pressure-angle", po::value<std::string>()->value_name("ANGLE"), "pressure angle (default 20 deg) (bare number: deg)")
+      ("helix-angle", po::value<std::string>()->value_name("ANGLE"), "helix angle (default 0: spur) (bare number: deg)")
       ("x1", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 1 (default 0)")
       ("x2", po::value<std::string>()->value_name("X"), "profile shift coefficient of gear 2 (default 0; ISO sign for a ring)")
       ("centre-distance", po::value<std::string>()->value_name("LEN"),
-       "working centre distance, mm: the shift sum follows from it (with --x1: x2 = sum - x1)")
+       "working centre distance: the shift sum follows from it (with --x1: x2 = sum - x1) (bare number: mm)")
       ("split", po::value<std::string>()->value_name("balanced|proportional|min-shift|user"),
        "split of the shift sum with --centre-distance (default balanced specific sliding; min-shift: the smallest "
        "shifts free of undercut; user with --x1)")
@@ -98,20 +98,20 @@ void add_gear_options(io::po::options_description& desc) {
       ("addendum", po::value<std::string>()->value_name("COEF"), "rack addendum coefficient h_aP* (default 1)")
       ("dedendum", po::value<std::string>()->value_name("COEF"), "rack dedendum coefficient h_fP* (default 1.25)")
       ("root-radius", po::value<std::string>()->value_name("COEF"), "rack root radius coefficient rho_fP* (default 0.38)")
-      ("face-width", po::value<std::string>()->value_name("LEN"), "face width b, mm (overlap ratio)")
-      ("backlash", po::value<std::string>()->value_name("LEN"), "target normal backlash j_bn, mm: sets equal thickness allowances")
-      ("allowance1", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn1, mm (negative: thinner)")
-      ("allowance2", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn2, mm (negative: thinner)")
-      ("centre-distance-deviation", po::value<std::string>()->value_name("LEN"), "centre distance deviation A_a, mm")
-      ("pin-diameter", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for both gears, mm")
-      ("pin-diameter1", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 1, mm")
-      ("pin-diameter2", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 2, mm")
+      ("face-width", po::value<std::string>()->value_name("LEN"), "face width b (overlap ratio) (bare number: mm)")
+      ("backlash", po::value<std::string>()->value_name("LEN"), "target normal backlash j_bn: sets equal thickness allowances (bare number: mm)")
+      ("allowance1", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn1 (negative: thinner) (bare number: mm)")
+      ("allowance2", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn2 (negative: thinner) (bare number: mm)")
+      ("centre-distance-deviation", po::value<std::string>()->value_name("LEN"), "centre distance deviation A_a (bare number: mm)")
+      ("pin-diameter", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for both gears (bare number: mm)")
+      ("pin-diameter1", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 1 (bare number: mm)")
+      ("pin-diameter2", po::value<std::string>()->value_name("LEN"), "pin/ball diameter for gear 2 (bare number: mm)")
       ("svg", po::value<std::string>()->value_name("FILE"), "write the drawing as SVG")
-      ("dxf", po::value<std::string>()->value_name("FILE"), "write the drawing as DXF (R2000, mm)")
+      ("dxf", po::value<std::string>()->value_name("FILE"), "write the drawing as DXF (R2000, drawn in mm)")
       ("draw", po::value<std::string>()->value_name("pair|gear1|gear2"), "what --svg/--dxf draw (default pair)")
-      ("tolerance", po::value<std::string>()->value_name("LEN"), "largest distance of the drawn tooth outline from the generated form (default 1um; 0.1um..1mm)")
+      ("tolerance", po::value<std::string>()->value_name("LEN"), "largest distance of the drawn tooth outline from the generated form (default 1um; 0.1um..1mm) (bare number: mm)")
       ("cutter-teeth", po::value<std::string>()->value_name("N"), "teeth of the shaper cutter that cuts the ring (default: about 100 mm diameter)")
-      ("cutter-tip-radius", po::value<std::string>()->value_name("LEN"), "tip rounding radius of the ring's shaper cutter (default rho_fP* m_n, or 3/4 of the largest that fits)");
+      ("cutter-tip-radius", po::value<std::string>()->value_name("LEN"), "tip rounding radius of the ring's shaper cutter (default rho_fP* m_n, or 3/4 of the largest that fits) (bare number: mm)");
 }
 
 namespace {

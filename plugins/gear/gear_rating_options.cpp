@@ -28,7 +28,7 @@ std::string text_of(const io::po::variables_map& vm, const char* key) { return v
 
 double quantity(const io::po::variables_map& vm, const char* key, io::Quantity q, const char* unit) {
   try {
-    return io::parse_quantity_si(text_of(vm, key), q, unit);
+    return io::parse_option_quantity_si(text_of(vm, key), q, unit);
   } catch (const io::QuantityError& e) {
     fail(key, e.what());
   }
@@ -39,6 +39,15 @@ double positive(const io::po::variables_map& vm, const char* key, bool zero_ok =
   const double v = quantity(vm, key, io::Quantity::dimensionless, "");
   if (!(std::isfinite(v) && (v > 0.0 || (zero_ok && v == 0.0)))) {
     fail(key, fmt::format("expected a number {} 0, found {}", zero_ok ? ">=" : ">", text_of(vm, key).substr(0, 60)));
+  }
+  return v;
+}
+
+// A length > 0 (or >= 0 with `zero_ok`) in `unit` ("um", "mm"), the unit of a bare number too.
+double length_in(const io::po::variables_map& vm, const char* key, const char* unit, bool zero_ok = false) {
+  const double v = quantity(vm, key, io::Quantity::length, unit) / io::unit_factor_si(unit, io::Quantity::length);
+  if (!(v > 0.0 || (zero_ok && v == 0.0))) {
+    fail(key, fmt::format("expected a length {} 0, found {}", zero_ok ? ">=" : ">", text_of(vm, key).substr(0, 60)));
   }
   return v;
 }
@@ -68,13 +77,13 @@ Enum choice(const io::po::variables_map& vm, const char* key, const std::map<std
 void read_load(const io::po::variables_map& vm, gg::RatingInput& r) {
   if (given(vm, "torque1") && given(vm, "power")) fail("power", "cannot be combined with --torque1: give one of them");
   if (!given(vm, "speed1")) fail(given(vm, "power") ? "power" : "torque1", "the rating needs --speed1 (pinion speed, rpm)");
-  r.n_1 = quantity(vm, "speed1", io::Quantity::angular_velocity, "rpm") * kRpm;
+  r.n_1 = quantity(vm, "speed1", io::Quantity::angular_velocity, "") * kRpm;
   if (!(r.n_1 > 0.0)) fail("speed1", fmt::format("expected a speed > 0, found {}", text_of(vm, "speed1").substr(0, 60)));
   if (given(vm, "torque1")) {
-    r.T_1 = quantity(vm, "torque1", io::Quantity::torque, "N*m");
+    r.T_1 = quantity(vm, "torque1", io::Quantity::torque, "");
     if (!(r.T_1 > 0.0)) fail("torque1", fmt::format("expected a torque > 0, found {}", text_of(vm, "torque1").substr(0, 60)));
   } else {
-    const double P = quantity(vm, "power", io::Quantity::power, "kW");
+    const double P = quantity(vm, "power", io::Quantity::power, "");
     if (!(P > 0.0)) fail("power", fmt::format("expected a power > 0, found {}", text_of(vm, "power").substr(0, 60)));
     r.T_1 = P / (r.n_1 / kRpm);
   }
@@ -110,28 +119,28 @@ void read_quality_and_deviations(const io::po::variables_map& vm, gg::RatingInpu
       {"f-pb", &gg::RatingInput::f_pb}, {"f-falpha", &gg::RatingInput::f_falpha}, {"F-betax", &gg::RatingInput::F_betax},
       {"f-ma", &gg::RatingInput::f_ma}, {"f-sh", &gg::RatingInput::f_sh}, {"tip-relief", &gg::RatingInput::C_a}};
   for (const auto& [key, field] : deviations) {
-    if (given(vm, key)) r.*field = positive(vm, key, true);
+    if (given(vm, key)) r.*field = length_in(vm, key, "um", true);
   }
 }
 
 void read_surface_and_lubrication(const io::po::variables_map& vm, gg::RatingInput& r) {
   if (given(vm, "oil-viscosity")) r.nu_40 = positive(vm, "oil-viscosity");
   if (given(vm, "flank-roughness")) {
-    const double R_a = positive(vm, "flank-roughness");
+    const double R_a = length_in(vm, "flank-roughness", "um");
     r.R_z_flank = {6.0 * R_a, 6.0 * R_a};
   }
   if (given(vm, "flank-rz")) {
     if (given(vm, "flank-roughness")) fail("flank-rz", "cannot be combined with --flank-roughness (R_a): give one of them");
-    const double R_z = positive(vm, "flank-rz");
+    const double R_z = length_in(vm, "flank-rz", "um");
     r.R_z_flank = {R_z, R_z};
   }
   if (given(vm, "protuberance")) r.s_pr = positive(vm, "protuberance", true);
   if (given(vm, "root-roughness")) {
-    const double R_z = positive(vm, "root-roughness", true);
+    const double R_z = length_in(vm, "root-roughness", "um", true);
     r.R_z_root = {R_z, R_z};
   }
-  if (given(vm, "rim1")) r.s_R[0] = positive(vm, "rim1");
-  if (given(vm, "rim2")) r.s_R[1] = positive(vm, "rim2");
+  if (given(vm, "rim1")) r.s_R[0] = length_in(vm, "rim1", "mm");
+  if (given(vm, "rim2")) r.s_R[1] = length_in(vm, "rim2", "mm");
   if (given(vm, "min-safety-pitting")) r.S_Hmin = positive(vm, "min-safety-pitting");
   if (given(vm, "min-safety-bending")) r.S_Fmin = positive(vm, "min-safety-bending");
   r.limited_pitting = vm["limited-pitting"].as<bool>();
@@ -178,27 +187,27 @@ void add_rating_options(io::po::options_description& desc) {
   namespace po = io::po;
   auto text = [] { return po::value<std::string>(); };
   desc.add_options()
-      ("torque1", text()->value_name("TORQUE"), "rating: torque on gear 1, N*m (or with a unit: 9 kN*m)")
-      ("power", text()->value_name("POWER"), "rating: transmitted power, kW (instead of --torque1)")
-      ("speed1", text()->value_name("SPEED"), "rating: speed of gear 1, rpm")
+      ("torque1", text()->value_name("TORQUE"), "rating: torque on gear 1 (unit required, e.g. 9kN*m)")
+      ("power", text()->value_name("POWER"), "rating: transmitted power, instead of --torque1 (unit required, e.g. 7.5kW)")
+      ("speed1", text()->value_name("SPEED"), "rating: speed of gear 1 (unit required, e.g. 1450rpm)")
       ("material1", text()->value_name("NAME"), "rating: material of gear 1 (18CrNiMo7-6, 42CrMo4, ..., or CLASS:GRADE:HARDNESS)")
       ("material2", text()->value_name("NAME"), "rating: material of gear 2")
       ("method", text()->value_name("iso6336|agma|lewis-hertz"), "rating method (default iso6336)")
       ("application-factor", text()->value_name("K_A"), "application factor K_A (default 1)")
-      ("life", text()->value_name("TIME"), "required life, h (default 20000 h)")
-      ("oil-viscosity", text()->value_name("NU40"), "kinematic viscosity at 40 C, mm^2/s (default 220)")
-      ("flank-roughness", text()->value_name("RA"), "flank roughness R_a, um (default 0.5: R_z = 3)")
-      ("flank-rz", text()->value_name("RZ"), "flank roughness R_z, um (instead of --flank-roughness)")
-      ("root-roughness", text()->value_name("RZ"), "root roughness R_z, um (default 10)")
+      ("life", text()->value_name("TIME"), "required life (default 20000 h) (bare number: h)")
+      ("oil-viscosity", text()->value_name("NU40"), "kinematic viscosity at 40 C, a plain number (default 220) (bare number: mm^2/s)")
+      ("flank-roughness", text()->value_name("LEN"), "flank roughness R_a (default 0.5 um: R_z = 3 um) (bare number: um)")
+      ("flank-rz", text()->value_name("LEN"), "flank roughness R_z, instead of --flank-roughness (bare number: um)")
+      ("root-roughness", text()->value_name("LEN"), "root roughness R_z (default 10 um) (bare number: um)")
       ("protuberance", text()->value_name("COEF"), "residual protuberance of the tool s_pr / m_n (ISO 6336-3 Eq. 19; default 0)")
-      ("f-pb", text()->value_name("UM"), "transverse base pitch deviation f_pb, um (default from --quality)")
-      ("f-falpha", text()->value_name("UM"), "profile form deviation f_falpha, um (default from --quality)")
-      ("F-betax", text()->value_name("UM"), "initial equivalent misalignment F_betax, um (instead of f_ma, f_sh)")
-      ("f-ma", text()->value_name("UM"), "mesh misalignment from manufacturing f_ma, um (default f_HbetaT of --quality)")
-      ("f-sh", text()->value_name("UM"), "misalignment from shaft deflection f_sh, um (default ISO 6336-1 Eq. 43)")
-      ("tip-relief", text()->value_name("UM"), "tip relief C_a, um (default: by running-in)")
-      ("rim1", text()->value_name("LEN"), "rim thickness of gear 1, mm (default solid)")
-      ("rim2", text()->value_name("LEN"), "rim thickness of gear 2, mm (default solid)")
+      ("f-pb", text()->value_name("LEN"), "transverse base pitch deviation f_pb (default from --quality) (bare number: um)")
+      ("f-falpha", text()->value_name("LEN"), "profile form deviation f_falpha (default from --quality) (bare number: um)")
+      ("F-betax", text()->value_name("LEN"), "initial equivalent misalignment F_betax, instead of f_ma, f_sh (bare number: um)")
+      ("f-ma", text()->value_name("LEN"), "mesh misalignment from manufacturing f_ma (default f_HbetaT of --quality) (bare number: um)")
+      ("f-sh", text()->value_name("LEN"), "misalignment from shaft deflection f_sh (default ISO 6336-1 Eq. 43) (bare number: um)")
+      ("tip-relief", text()->value_name("LEN"), "tip relief C_a (default: by running-in) (bare number: um)")
+      ("rim1", text()->value_name("LEN"), "rim thickness of gear 1 (default solid) (bare number: mm)")
+      ("rim2", text()->value_name("LEN"), "rim thickness of gear 2 (default solid) (bare number: mm)")
       ("min-safety-pitting", text()->value_name("S"), "required S_Hmin (default 1.0)")
       ("min-safety-bending", text()->value_name("S"), "required S_Fmin (default 1.4)")
       ("limited-pitting", po::bool_switch(), "Z_NT line with limited pitting permitted")

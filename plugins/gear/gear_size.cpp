@@ -19,7 +19,7 @@ namespace gg = gearkit::gear;
 namespace {
 
 constexpr std::string_view kUsage =
-    "gearkit gear size --ratio U --torque1 T | --power P --speed1 N --material1 M --material2 M [--quality 6] [--life 20000] "
+    "gearkit gear size --ratio U --torque1 TORQUE | --power POWER --speed1 SPEED --material1 M --material2 M [--quality 6] [--life 20000] "
     "[--ratio-tolerance 0.02] [--modules 2,2.5,3] [--z1-min 14] [--z1-max 40] [--shifts 0,0.2,0.4] [--helix-angle 0] "
     "[--pressure-angle 20] [--width-ratio-max 1] [--width-module-min 8] [--count 5] [--format text|json|csv|md|html]";
 
@@ -117,12 +117,12 @@ int run_gear_size_command(plugin::CommandContext& context) {
   auto text = [] { return io::po::value<std::string>(); };
   desc.add_options()("ratio", text()->value_name("U"), "required gear ratio z2/z1")
       ("ratio-tolerance", text()->value_name("TOL"), "relative ratio tolerance (default 0.02)")
-      ("modules", text()->value_name("LIST"), "normal modules to try, mm (default ISO 54 series I, 1..25)")
+      ("modules", text()->value_name("LIST"), "normal modules to try, plain numbers (default ISO 54 series I, 1..25) (bare number: mm)")
       ("z1-min", text()->value_name("N"), "smallest pinion tooth count (default 14)")
       ("z1-max", text()->value_name("N"), "largest pinion tooth count (default 40)")
       ("shifts", text()->value_name("LIST"), "x1 of the V-0 shift split, x2 = -x1 (default 0,0.2,0.4)")
-      ("helix-angle", text()->value_name("ANGLE"), "helix angle, deg (default 0)")
-      ("pressure-angle", text()->value_name("ANGLE"), "normal pressure angle, deg (default 20)")
+      ("helix-angle", text()->value_name("ANGLE"), "helix angle (default 0) (bare number: deg)")
+      ("pressure-angle", text()->value_name("ANGLE"), "normal pressure angle (default 20 deg) (bare number: deg)")
       ("width-ratio-max", text()->value_name("B/D1"), "largest face width over pinion diameter (default 1)")
       ("width-module-min", text()->value_name("B/M"), "smallest face width over module (default 8)")
       ("count", text()->value_name("N"), "candidates shown (default 5)");

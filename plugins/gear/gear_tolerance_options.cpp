@@ -144,22 +144,22 @@ void add_tolerance_options(io::po::options_description& desc) {
        "ISO 1328-1 accuracy grade of both gears, or of gear 1 and gear 2 (2013: 1..11; 1995: 0..12)")
       ("iso1328-edition", po::value<std::string>()->value_name("2013|1995"), "edition of ISO 1328-1 (default 2013)")
       ("thickness-allowances1", po::value<std::string>()->value_name("UPPER,LOWER"),
-       "normal tooth thickness allowances A_sne,A_sni of gear 1, mm (default: ISO/TR 10064-2 from --quality)")
+       "normal tooth thickness allowances A_sne,A_sni of gear 1 (default: ISO/TR 10064-2 from --quality) (bare number: mm)")
       ("thickness-allowances2", po::value<std::string>()->value_name("UPPER,LOWER"),
-       "normal tooth thickness allowances A_sne,A_sni of gear 2, mm")
+       "normal tooth thickness allowances A_sne,A_sni of gear 2 (bare number: mm)")
       ("din3967", po::value<std::string>()->value_name("TS[,TS2]"),
        "DIN 3967 tooth thickness allowances of both gears or of gear 1 and gear 2, e.g. 27cd (tolerance series "
        "21..30, deviation series a..h)")
       ("min-backlash", po::value<std::string>()->value_name("LEN"),
-       "minimum normal backlash the allowances must leave, mm (default ISO/TR 10064-2)")
+       "minimum normal backlash the allowances must leave (default ISO/TR 10064-2) (bare number: mm)")
       ("centre-distance-tolerance", po::value<std::string>()->value_name("jsN"),
        "ISO 286 js field of the centre distance, js5..js11 (default from the grade)")
       ("centre-distance-allowances", po::value<std::string>()->value_name("UPPER,LOWER"),
-       "centre distance allowances A_ae,A_ai, mm")
+       "centre distance allowances A_ae,A_ai (bare number: mm)")
       ("temperature", po::value<std::string>()->value_name("T[,T_HOUSING]"),
-       "operating temperature of the gears (and of the housing), deg C: backlash when warm")
+       "operating temperature of the gears (and of the housing), plain numbers: backlash when warm (bare number: deg C)")
       ("expansion", po::value<std::string>()->value_name("A1,A2,AH"),
-       "linear expansion coefficients of gear 1, gear 2 and housing, 1/K (default steel 11.5e-6)");
+       "linear expansion coefficients of gear 1, gear 2 and housing, plain numbers (default steel 11.5e-6) (bare number: 1/K)");
 }
 
 gg::Iso1328Edition read_iso1328_edition(const io::po::variables_map& vm) {

@@ -97,7 +97,7 @@ Conditions gather_conditions(const gt::TrainModel& model, const po::variables_ma
     } else if (option == "couple") {
       c.list.push_back(parse_couple(model, text, fail));
     } else {
-      ParsedInput input = parse_input(model, text, fail);
+      ParsedInput input = parse_input(model, text, fail, !origin.mark.has_value());
       c.list.push_back(input.condition);
       c.input_speeds_rad_s.push_back(input.speed_rad_s);
     }
@@ -423,20 +423,20 @@ void add_train_options(po::options_description& desc) {
       ("fix", po::value<std::vector<std::string>>()->value_name("MEMBER"), "hold MEMBER still (repeatable)")
       ("couple", po::value<std::vector<std::string>>()->value_name("A=B"), "members A and B turn together (repeatable)")
       ("input", po::value<std::vector<std::string>>()->value_name("MEMBER[=SPEED]"),
-       "a driven member and its speed, rpm by default (repeatable); without SPEED only ratios are shown")
+       "a driven member and its speed (repeatable); without SPEED only ratios are shown (unit required, e.g. sun=1500rpm)")
       ("output-member", po::value<std::string>()->value_name("MEMBER"),
        "the output member: ratio w_out/w_in, --modes and the load of --torque")
       ("torque", po::value<std::string>()->value_name("MEMBER=TORQUE"),
-       "a torque applied to MEMBER (N*m by default); the others follow from equilibrium")
-      ("power", po::value<std::string>()->value_name("MEMBER=POWER"), "power fed to MEMBER (W by default)")
+       "a torque applied to MEMBER; the others follow from equilibrium (unit required, e.g. sun=40N*m)")
+      ("power", po::value<std::string>()->value_name("MEMBER=POWER"), "power fed to MEMBER (unit required, e.g. sun=7.5kW)")
       ("rate", po::bool_switch(), "load capacity of every mesh (docs/rating.md; face widths and materials in the file)")
       ("mesh-efficiency", io::number_in({0, 1, true, false, "a basic efficiency in (0, 1]"})->value_name("ETA"),
        "basic efficiency eta_0 of the meshes without their own 'efficiency' (default 1)")
       ("modes", "ratio w_out/w_in with each other member held fixed in turn, and with pairs coupled")
       ("willis", po::value<std::string>()->value_name("M1,M2,..."),
        "Willis' equation of each stage in the velocity vector u = {w_M1, w_M2, ...}, planets eliminated")
-      ("centre-tolerance", po::value<std::string>()->value_name("LENGTH"),
-       "coaxiality: largest accepted difference of planet centre distances (default 0.001 mm)")
+      ("centre-tolerance", po::value<std::string>()->value_name("LEN"),
+       "coaxiality: largest accepted difference of planet centre distances (default 0.001 mm) (bare number: mm)")
       ("svg", po::value<std::string>()->value_name("FILE"),
        "write the stick diagram of the train and the speed diagram of its planetary stages as SVG")
       ("dxf", po::value<std::string>()->value_name("FILE"), "write the same drawing as DXF R2000");
@@ -472,8 +472,7 @@ void add_load(io::Report& report, const po::variables_map& vm, const Kinematics&
   const auto fail = fail_with(Origin{option, {}});
   if (!k.output) io::fail_option("--" + option, "needs --output-member MEMBER (where the load acts)");
   auto [member, value] = parse_member_quantity(k.model, vm[option].as<std::string>(),
-                                               is_torque ? io::Quantity::torque : io::Quantity::power,
-                                               is_torque ? "N*m" : "W", fail);
+                                               is_torque ? io::Quantity::torque : io::Quantity::power, fail);
   if (k.solution.inputs.empty()) io::fail_option("--" + option, "needs at least one --input MEMBER");
   check_torque_member(k.model, k.conditions, member, *k.output, option);
   bool all_determined = true;

@@ -48,14 +48,17 @@ gt::Condition parse_couple(const gt::TrainModel& model, const std::string& text,
                        "couple w_" + model.member(a).name + " = w_" + model.member(b).name};
 }
 
-ParsedInput parse_input(const gt::TrainModel& model, const std::string& text, const ConditionFail& fail) {
+ParsedInput parse_input(const gt::TrainModel& model, const std::string& text, const ConditionFail& fail,
+                        bool typed_option) {
   const auto eq = text.find('=');
   const gt::MemberId m = parse_member(model, text.substr(0, eq), fail);
   ParsedInput input{gt::Condition{gt::Condition::Kind::input, m, gt::ground, "input " + model.member(m).name},
                     std::nullopt};
   if (eq != std::string::npos) {
     try {
-      input.speed_rad_s = io::parse_quantity_si(trim(text.substr(eq + 1)), io::Quantity::angular_velocity, "rpm");
+      const std::string speed = trim(text.substr(eq + 1));
+      input.speed_rad_s = typed_option ? io::parse_option_quantity_si(speed, io::Quantity::angular_velocity, "")
+                                       : io::parse_quantity_si(speed, io::Quantity::angular_velocity, "rpm");
     } catch (const io::QuantityError& e) {
       fail(fmt::format("input speed of '{}': {}", model.member(m).name, e.what()));
     }
@@ -66,14 +69,13 @@ ParsedInput parse_input(const gt::TrainModel& model, const std::string& text, co
 }
 
 std::pair<gt::MemberId, double> parse_member_quantity(const gt::TrainModel& model, const std::string& text,
-                                                      io::Quantity quantity, std::string_view default_unit,
-                                                      const ConditionFail& fail) {
+                                                      io::Quantity quantity, const ConditionFail& fail) {
   const auto eq = text.find('=');
   if (eq == std::string::npos) fail(fmt::format("expected MEMBER=VALUE, found {}", io::quote(text)));
   const gt::MemberId m = parse_member(model, text.substr(0, eq), fail);
   if (m == gt::ground) fail("expected a moving member, found 'ground'");
   try {
-    return {m, io::parse_quantity_si(trim(text.substr(eq + 1)), quantity, default_unit)};
+    return {m, io::parse_option_quantity_si(trim(text.substr(eq + 1)), quantity, "")};
   } catch (const io::QuantityError& e) {
     fail(e.what());
   }

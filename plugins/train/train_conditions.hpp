@@ -30,13 +30,16 @@ gearkit::train::Condition parse_fix(const gearkit::train::TrainModel& model, con
 /// "A=B".
 gearkit::train::Condition parse_couple(const gearkit::train::TrainModel& model, const std::string& text,
                                        const ConditionFail& fail);
-/// "MEMBER=SPEED" (rpm by default) or just "MEMBER".
-ParsedInput parse_input(const gearkit::train::TrainModel& model, const std::string& text, const ConditionFail& fail);
+/// "MEMBER=SPEED" or just "MEMBER". `typed_option`: the text is from --input, whose SPEED needs its
+/// unit ("sun=1500rpm"; docs/cli.md, "Quantity options"); else from a train file, where a bare
+/// SPEED is rpm (docs/train.md).
+ParsedInput parse_input(const gearkit::train::TrainModel& model, const std::string& text, const ConditionFail& fail,
+                        bool typed_option);
 
-/// "MEMBER=VALUE" with VALUE a quantity of kind `q` in `default_unit`; returns member and SI value.
+/// "MEMBER=VALUE" of an option (--torque, --power), VALUE a quantity of kind `q` with its unit (a
+/// bare number is refused: io::parse_option_quantity_si); returns member and SI value.
 std::pair<gearkit::train::MemberId, double> parse_member_quantity(const gearkit::train::TrainModel& model,
                                                                   const std::string& text, io::Quantity quantity,
-                                                                  std::string_view default_unit,
                                                                   const ConditionFail& fail);
 
 }  // namespace gearkit::plugins::train

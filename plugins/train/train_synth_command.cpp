@@ -188,8 +188,8 @@ int run_train_synth_command(plugin::CommandContext& context, const std::vector<s
   po::options_description desc("gearkit train synth options");
   add_common_synth_options(desc);
   desc.add_options()
-      ("m1", po::value<std::string>()->value_name("MODULE"), "reducer: module of stage 1-2 (mm by default)")
-      ("m2", po::value<std::string>()->value_name("MODULE"), "reducer: module of stage 3-4")
+      ("m1", po::value<std::string>()->value_name("MODULE"), "reducer: module of stage 1-2 (bare number: mm)")
+      ("m2", po::value<std::string>()->value_name("MODULE"), "reducer: module of stage 3-4 (bare number: mm)")
       ("z1", po::value<long long>()->value_name("Z"), "reducer: fix the input pinion's teeth")
       ("equal-stages", "reducer: both stages with the same ratio")
       ("planets", po::value<long long>()->value_name("N"), "planetary: number of planets (default 3)")
