@@ -95,8 +95,8 @@ TEST(Limits, ValuesThatWouldMakeAResultNonFiniteAreRefusedWhereTheyEnter) {
                        "option '--tolerance': expected a relative tolerance from 0 to 0.1, found 1e+20");
   expect_quick_refusal("gear --z1 12 --z2 24 --module 3 --tolerance 1e-300",
                        "option '--tolerance': expected a length from 0.1 um to 1 mm, found '1e-300'");
-  expect_quick_refusal("cam " + example("cams/translating_roller_cycloidal.yaml") + " --feed 1e300",
-                       "option '--feed': expected a feed > 0 and up to 60000 mm/min, found '1e300'");
+  expect_quick_refusal("cam " + example("cams/translating_roller_cycloidal.yaml") + " --feed 1e300mm/min",
+                       "option '--feed': expected a feed > 0 and up to 60000 mm/min, found '1e300mm/min'");
   expect_quick_refusal("train " + example("trains/simple_planetary.yaml") + " --centre-tolerance 1e300",
                        "option '--centre-tolerance': expected a length from 0 to 10 km, found '1e300'");
   std::ifstream in(kExamples / "dynamics" / "otm2015_p4_flywheel.yaml");

@@ -253,7 +253,7 @@ COMMANDS = {
              "options": dict(GEAR, **TOLERANCES, **RATING)},
     "gear file": {"files": "gears", "base": [], "options": dict(TOLERANCES, **RATING, **{
         k: GEAR[k] for k in ("--svg", "--dxf", "--draw", "--tolerance", "--cutter-teeth", "--cutter-tip-radius")})},
-    "gear size": {"files": None, "base": ["--ratio", "3.5", "--torque1", "500", "--speed1", "1450", "--material1",
+    "gear size": {"files": None, "base": ["--ratio", "3.5", "--torque1", "500N*m", "--speed1", "1450rpm", "--material1",
                                           "18CrNiMo7-6", "--material2", "18CrNiMo7-6"],
                   "options": dict(RATING, **SIZE)},
     "train": {"files": "trains", "base": [], "options": {

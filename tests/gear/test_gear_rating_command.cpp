@@ -31,7 +31,7 @@ std::string write(const std::string& name, const std::string& text) {
 }
 
 const std::string kExample1 = std::string(GEARKIT_SOURCE_DIR) + "/examples/gears/iso_tr_6336_30_example1.yaml";
-const std::string kLoad = " --torque1 9kN*m --speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 ";
+const std::string kLoad = " --torque1 9kN*m --speed1 360rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 ";
 const std::string kPair = "--z1 17 --z2 103 --module 8 --helix-angle 15.8 --centre-distance 500 --x1 0.145 --face-width 100 "
                           "--dedendum 1.4 --root-radius 0.39";
 
@@ -96,7 +96,7 @@ TEST(GearRatingCli, SafetyBelowTheMinimumIsAWarningNotAnError) {
 }
 
 TEST(GearRatingCli, BadInputNamesTheOption) {
-  expect_error(run(kPair + " --torque1 9000 --speed1 360 --material1 18CrNiMo7-6 --material2 unobtainium"), "'--material2'");
+  expect_error(run(kPair + " --torque1 9000N*m --speed1 360rpm --material1 18CrNiMo7-6 --material2 unobtainium"), "'--material2'");
   expect_error(run(kPair + kLoad + "--quality 12"), "'--quality'");
   expect_error(run(kPair + kLoad + "--quality 6 --life -5h"), "'--life'");
   expect_error(run(kPair + kLoad + "--quality 6 --factor K_xyz=2"), "'--factor'");
@@ -124,7 +124,7 @@ TEST(GearRatingCli, BadPairFilesNameTheLine) {
 }
 
 TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
-  const CliRun r = run("size --ratio 3.5 --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
+  const CliRun r = run("size --ratio 3.5 --torque1 500N*m --speed1 1450rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
                        "--quality 6 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto c = nlohmann::json::parse(r.out)["sizing"]["candidates"];
@@ -142,7 +142,7 @@ TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
     const std::string args = "--z1 " + std::to_string(best["z1"].get<int>()) + " --z2 " + std::to_string(best["z2"].get<int>()) +
                              " --module " + std::to_string(best["m_n_mm"].get<double>()) + " --x1 " + std::to_string(best["x1"].get<double>()) +
                              " --x2 " + std::to_string(best["x2"].get<double>()) + " --face-width " + std::to_string(b) +
-                             " --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --quality 6 --format json";
+                             " --torque1 500N*m --speed1 1450rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --quality 6 --format json";
     const CliRun g = run(args);
     EXPECT_EQ(g.status, 0) << g.err;
     const auto gears = nlohmann::json::parse(g.out)["rating"]["gears"];
@@ -154,9 +154,9 @@ TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
 }
 
 TEST(GearSizeCli, BadInput) {
-  expect_error(run("size --torque1 500 --speed1 1450 --material1 C45 --material2 C45"), "'--ratio'");
-  expect_error(run("size --ratio 0.5 --torque1 500 --speed1 1450 --material1 C45 --material2 C45"), "'--ratio'");
-  expect_error(run("size --ratio 3 --torque1 500 --speed1 1450 --material1 C45 --material2 C45 --z1-min 5 --z1-max 500 --shifts "
+  expect_error(run("size --torque1 500N*m --speed1 1450rpm --material1 C45 --material2 C45"), "'--ratio'");
+  expect_error(run("size --ratio 0.5 --torque1 500N*m --speed1 1450rpm --material1 C45 --material2 C45"), "'--ratio'");
+  expect_error(run("size --ratio 3 --torque1 500N*m --speed1 1450rpm --material1 C45 --material2 C45 --z1-min 5 --z1-max 500 --shifts "
                    "0,0.1,0.2,0.3,0.4,0.5"),
                "'--modules'");
 }
@@ -166,7 +166,7 @@ TEST(GearRatingCli, ShigleyExample14_4InUsCustomaryUnits) {
   // 1800 rev/min, Q_v = 6, R = 0.90, 1e8 pinion cycles, J = 0.30 / 0.40, C_p = 2300 psi^0.5
   // (190.98 MPa^0.5), grade 1 steel 240 / 200 HB (HV = HB / 0.95 in gearkit's materials).
   // Published: S_F = 5.62 / 6.82, S_H = 1.69 / 1.52.
-  const CliRun r = run("--z1 17 --z2 52 --module 2.54mm --face-width 1.5in --power 4hp --speed1 1800 "
+  const CliRun r = run("--z1 17 --z2 52 --module 2.54mm --face-width 1.5in --power 4hp --speed1 1800rpm "
                        "--material1 through-hardened-alloy:MQ:252.6316 --material2 through-hardened-alloy:MQ:210.5263 "
                        "--method agma --agma-quality 6 --reliability 0.9 --life 925.926h --factor J1=0.30 --factor J2=0.40 "
                        "--factor Z_E=190.98 --format json");
@@ -191,7 +191,7 @@ TEST(GearRatingCli, ProtuberanceThinsTheRoot) {
 // unknown and Y_DT = 1 (it was 0.774, "no grade" acting as grade 0); class 7 also gives 1.
 TEST(GearRatingCli, DeepToothFactorWithoutAGradeIsOne) {
   const std::string pair = "--z1 40 --z2 120 --module 2 --helix-angle 35 --addendum 1.3 --dedendum 1.55 --root-radius 0.2 "
-                           "--face-width 40 --speed1 1000 --material1 42CrMo4 --material2 42CrMo4 --torque1 200 --f-pb 10 "
+                           "--face-width 40 --speed1 1000rpm --material1 42CrMo4 --material2 42CrMo4 --torque1 200N*m --f-pb 10 "
                            "--f-falpha 10 --f-ma 10 --format json";
   for (const char* grade : {"", " --quality 7"}) {
     const CliRun r = run(pair + grade);
@@ -206,7 +206,7 @@ TEST(GearRatingCli, DeepToothFactorWithoutAGradeIsOne) {
 
 // --iso1328-edition 1995 reaches the rating: its grade range (0..12) and its tolerances for K_v.
 TEST(GearRatingCli, TheRatingUsesTheIso1328EditionGiven) {
-  const std::string args = kPair + " --torque1 9kN*m --speed1 3000 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
+  const std::string args = kPair + " --torque1 9kN*m --speed1 3000rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
                                    "--format json --quality 6";
   auto rating = [&](const std::string& extra) {
     const CliRun r = run(args + extra);

@@ -95,7 +95,7 @@ def main():
             failures.append(what)
 
     pages = [
-        ("train", [a.exe, "train", ex("trains/simple_planetary.yaml"), "--torque", "sun=10", "--svg", w("train.svg"),
+        ("train", [a.exe, "train", ex("trains/simple_planetary.yaml"), "--torque", "sun=10N*m", "--svg", w("train.svg"),
                    "--format", "html", "-o", w("train.html")], ["speeds", "torques", "assembly_conditions"], 1, "857.1429"),
         ("cam", [a.exe, "cam", ex("cams/translating_roller_cycloidal.yaml"), "--svg", w("cam.svg"), "--plot", w("plot.svg"),
                  "--format", "html", "-o", w("cam.html")], ["motion_program", "checks"], 2, "cycloidal"),

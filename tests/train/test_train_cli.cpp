@@ -139,7 +139,7 @@ TEST(TrainCli, SynthesisOtmReducer) {
 // Torques on the simple planetary example, 10 N*m on the sun, ring held (hand derivation in
 // test_torques.cpp): carrier -35 N*m, ring reaction 25 N*m; efficiency (24 + eta0 60)/84.
 TEST(TrainCli, TorquesAndEfficiency) {
-  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --torque sun=10 --format json");
+  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --torque sun=10N*m --format json");
   ASSERT_EQ(run.status, 0) << run.err;
   const auto j = json_of(run);
   EXPECT_NEAR(j["torques"]["ideal_Nm"]["carrier"].get<double>(), -35.0, 1e-12);
@@ -216,17 +216,17 @@ TEST(TrainCli, HelicalPlanetaryCentreDistance) {
 }
 
 TEST(TrainCli, UnderDeterminedIsAWarning) {
-  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100 --format json");
+  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100rpm --format json");
   ASSERT_EQ(run.status, 0) << run.err;
   const auto j = json_of(run);
   ASSERT_FALSE(j["warnings"].empty());
   EXPECT_NE(j["warnings"][0].get<std::string>().find("'carrier'"), std::string::npos);
-  const CliRun strict = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100 --strict");
+  const CliRun strict = gearkit("train " + example("simple_planetary.yaml") + " --input sun=100rpm --strict");
   EXPECT_EQ(strict.status, 3);
 }
 
 TEST(TrainCli, OverDeterminedNamesTheOption) {
-  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --fix ring --fix carrier --input sun=100");
+  const CliRun run = gearkit("train " + example("simple_planetary.yaml") + " --fix ring --fix carrier --input sun=100rpm");
   EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("option '--input'"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("over-determines"), std::string::npos) << run.err;
@@ -382,7 +382,7 @@ TEST(TrainCli, TorqueOnAMemberNobodyActsOnIsRefused) {
                          "(ring, s1, s2), found 'short'"),
             std::string::npos)
       << run.err;
-  const CliRun ok = gearkit("train " + example("ravigneaux.yaml") + " --torque ring=-100");
+  const CliRun ok = gearkit("train " + example("ravigneaux.yaml") + " --torque ring=-100N*m");
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(ok.out.find("indeterminate"), std::string::npos) << ok.out;
 }
@@ -408,14 +408,14 @@ TEST(TrainCli, ABackDrivenWolfromTrainIsSelfLocking) {
   model.replace(model.find("input: sun = 3000 rpm"), 21, "input: ring2 = 100 rpm");
   model.replace(model.find("output: ring2"), 13, "output: sun");
   const CliRun back = gearkit("train " + model_file("wolfrom_back.yaml", model) +
-                              " --mesh-efficiency 0.9 --torque ring2=100 --format json");
+                              " --mesh-efficiency 0.9 --torque ring2=100N*m --format json");
   EXPECT_EQ(back.status, 0) << back.err;
   const auto j = nlohmann::json::parse(back.out);
   EXPECT_LE(j["torques"]["efficiency"].get<double>(), 0.0);
   bool warned = false;
   for (const auto& w : j["warnings"]) warned = warned || w.get<std::string>().rfind("self-locking:", 0) == 0;
   EXPECT_TRUE(warned) << j["warnings"];
-  const CliRun forward = gearkit("train " + example("wolfrom.yaml") + " --torque sun=10");
+  const CliRun forward = gearkit("train " + example("wolfrom.yaml") + " --torque sun=10N*m");
   EXPECT_EQ(forward.out.find("self-locking"), std::string::npos) << forward.out;
 }
 
@@ -426,7 +426,7 @@ TEST(TrainCli, ModesOfAFreeTrainAreSaidOnceAndTheirNumberIsBounded) {
   std::string free = "members: [a, b, c, d, e]\ngears:\n";
   for (const std::string m : {"a", "b", "c", "d", "e"}) free += "  - {name: g" + m + ", member: " + m + ", z: 20}\n";
   free += "meshes:\n  - {gears: [ga, gb]}\n";  // a-b geared; c, d, e free: 4 degrees of freedom
-  const CliRun once = gearkit("train " + model_file("free.yaml", free) + " --input a=1 --output-member b --modes");
+  const CliRun once = gearkit("train " + model_file("free.yaml", free) + " --input a=1rpm --output-member b --modes");
   EXPECT_EQ(once.status, 0) << once.err;
   EXPECT_NE(once.out.find("any member held or pair coupled  2 degree(s) of freedom left in every mode"),
             std::string::npos)
@@ -437,7 +437,7 @@ TEST(TrainCli, ModesOfAFreeTrainAreSaidOnceAndTheirNumberIsBounded) {
   for (int i = 0; i <= 42; ++i) chain += "  - {name: g" + std::to_string(i) + ", member: m" + std::to_string(i) + ", z: 20}\n";
   chain += "meshes:\n";
   for (int i = 0; i < 42; ++i) chain += "  - {gears: [g" + std::to_string(i) + ", g" + std::to_string(i + 1) + "]}\n";
-  const CliRun many = gearkit("train " + model_file("chain.yaml", chain) + " --input m0=1 --output-member m42 --modes");
+  const CliRun many = gearkit("train " + model_file("chain.yaml", chain) + " --input m0=1rpm --output-member m42 --modes");
   EXPECT_EQ(many.status, 2);
   EXPECT_NE(many.err.find("option '--modes': expected at most 40 members"), std::string::npos) << many.err;
 }

@@ -24,7 +24,7 @@ const std::string kFile = std::string(GEARKIT_SOURCE_DIR) + "/examples/trains/ra
 }  // namespace
 
 TEST(TrainRating, EveryMeshFromTheTrainsTorquesAndSpeeds) {
-  const CliRun r = run("'" + kFile + "' --torque sun=40 --rate --format json");
+  const CliRun r = run("'" + kFile + "' --torque sun=40N*m --rate --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto meshes = nlohmann::json::parse(r.out)["rating"]["meshes"];
   ASSERT_EQ(meshes.size(), 2u);
@@ -52,8 +52,8 @@ TEST(TrainRating, EveryMeshFromTheTrainsTorquesAndSpeeds) {
 }
 
 TEST(TrainRating, TorqueDoublesStresses) {
-  const auto a = nlohmann::json::parse(run("'" + kFile + "' --torque sun=40 --rate --format json").out)["rating"]["meshes"];
-  const auto b = nlohmann::json::parse(run("'" + kFile + "' --torque sun=80 --rate --format json").out)["rating"]["meshes"];
+  const auto a = nlohmann::json::parse(run("'" + kFile + "' --torque sun=40N*m --rate --format json").out)["rating"]["meshes"];
+  const auto b = nlohmann::json::parse(run("'" + kFile + "' --torque sun=80N*m --rate --format json").out)["rating"]["meshes"];
   EXPECT_NEAR(b[0]["F_t_N"].get<double>() / a[0]["F_t_N"].get<double>(), 2.0, 1e-9);
   EXPECT_LT(b[0]["gears"][0]["S_H"].get<double>(), a[0]["gears"][0]["S_H"].get<double>());
 }
@@ -69,7 +69,7 @@ TEST(TrainRating, BadInput) {
   std::string s = text.str();
   s.replace(s.find("material: 18CrNiMo7-6"), std::string("material: 18CrNiMo7-6").size(), "material: balsa");
   std::ofstream(bad) << s;
-  const CliRun r = run("'" + bad.string() + "' --torque sun=40 --rate");
+  const CliRun r = run("'" + bad.string() + "' --torque sun=40N*m --rate");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find(bad.filename().string() + ":"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1);
@@ -106,10 +106,10 @@ void expect_error_at(const CliRun& r, const std::string& where) {
 TEST(TrainRating, ErrorsNameTheOffendingKey) {
   int line = 0;
   const std::string quality = edited("quality13.yaml", "quality: 6", "quality: 13", &line);
-  CliRun r = run("'" + quality + "' --torque sun=40 --rate");
+  CliRun r = run("'" + quality + "' --torque sun=40N*m --rate");
   expect_error_at(r, "quality13.yaml:" + std::to_string(line) + ":12:");
   const std::string life = edited("life_negative.yaml", "life: 10000 h", "life: -2 h", &line);
-  r = run("'" + life + "' --torque sun=40 --rate");
+  r = run("'" + life + "' --torque sun=40N*m --rate");
   expect_error_at(r, "life_negative.yaml:" + std::to_string(line) + ":9:");
   EXPECT_EQ(r.err.find("life_h"), std::string::npos) << r.err;
 }
@@ -117,7 +117,7 @@ TEST(TrainRating, ErrorsNameTheOffendingKey) {
 // The same material reader as gear-pair files: a user-defined material map is accepted.
 TEST(TrainRating, UserDefinedMaterialMap) {
   const std::string file = edited("own_material.yaml", "material: 18CrNiMo7-6", "material: {name: mine, sigma_Hlim: 1200, sigma_Flim: 350}");
-  const CliRun r = run("'" + file + "' --torque sun=40 --rate --format json");
+  const CliRun r = run("'" + file + "' --torque sun=40N*m --rate --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto sun = nlohmann::json::parse(r.out)["rating"]["meshes"][0];
   EXPECT_EQ(sun["materials"][0], "mine");
@@ -127,5 +127,5 @@ TEST(TrainRating, UserDefinedMaterialMap) {
                          g["Z_W"].get<double>() * g["Z_X"].get<double>();
   EXPECT_NEAR(g["sigma_HP_MPa"].get<double>(), 1200.0 * product, 1e-9 * 1200.0);
   const std::string bad = edited("bad_material.yaml", "material: 18CrNiMo7-6", "material: {name: mine, sigma_Hlim: -5, sigma_Flim: 350}");
-  expect_error_at(run("'" + bad + "' --torque sun=40 --rate"), "bad_material.yaml:");
+  expect_error_at(run("'" + bad + "' --torque sun=40N*m --rate"), "bad_material.yaml:");
 }
