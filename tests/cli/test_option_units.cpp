@@ -18,7 +18,8 @@ using gearkit::testing::RunResult;
 namespace {
 
 const std::string kExamples = std::string(GEARKIT_SOURCE_DIR) + "/examples/";
-const std::string kGear = "gear --z1 20 --z2 60 --module 3 --face-width 30 --material1 42CrMo4 --material2 42CrMo4 ";
+const std::string kGear =
+    "gear --z1 20 --z2 60 --module 3 --face-width 30 --quality 6 --material1 42CrMo4 --material2 42CrMo4 ";
 const std::string kTrain = "train " + kExamples + "trains/simple_planetary.yaml --fix ring --output-member carrier ";
 
 /// Status 2, one stderr line, nothing on stdout, and the line is exactly `reason`.
