@@ -40,7 +40,8 @@ def commands(exe):
         m = re.match(r"^  (\S+)\s", line)
         if not m:
             break
-        names.append(m.group(1))
+        if m.group(1) != "help":  # `gearkit help CMD` is `gearkit CMD --help`
+            names.append(m.group(1))
     return names + SUBCOMMANDS
 
 
@@ -51,7 +52,7 @@ def help_options(text):
         m = OPTION_LINE.match(line)
         if m:
             entries.append([m.group("long1") or m.group("long2"), m.group("value").strip(), (m.group("desc") or "").strip()])
-        elif entries and line.startswith("   ") and line.strip():
+        elif entries and entries[-1] and line.startswith("   ") and line.strip():
             entries[-1][2] = (entries[-1][2] + " " + line.strip()).strip()
         elif not line.strip() or not line.startswith(" "):
             entries.append(None)  # a blank line or heading ends an entry
