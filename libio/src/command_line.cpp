@@ -295,7 +295,9 @@ std::string option_error_message(const po::error& e, const po::options_descripti
   if (dynamic_cast<const po::multiple_values*>(&e)) return fmt::format("{}: expected one value, found several", where);
   if (dynamic_cast<const po::unknown_option*>(&e)) {
     const std::optional<std::string> meant = nearest_option(option, desc);
-    return fmt::format("{}: expected an option listed by --help, found an unknown one{}", where,
+    // Boost names "--tabel=x" with its value: the option is the part before '='.
+    return fmt::format("option {}: expected an option listed by --help, found an unknown one{}",
+                       quote(option.substr(0, option.find('='))),
                        meant ? fmt::format("; did you mean {}?", quote(*meant)) : std::string());
   }
   if (const auto* ambiguous = dynamic_cast<const po::ambiguous_option*>(&e)) {
