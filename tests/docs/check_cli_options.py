@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Every command's --help against docs/cli.md, "Option names and quantity options" (issue 25, section 1):
+"""Every command's --help against docs/cli.md, "Quantity options" (issue 25, section 1):
 
 - every option that takes a value shows what the value looks like, never Boost's bare `arg`;
 - every quantity option's help description ends with its bare-number rule, `(bare number: UNIT)`
@@ -69,9 +69,9 @@ def parse_table(path):
     """{(command, option): rule} from the table, rule = ("unit", "mm") or ("required", "")."""
     with open(path, encoding="utf-8") as f:
         text = f.read()
-    m = re.search(r"^## Option names and quantity options\n(.*?)(?=^## |\Z)", text, re.MULTILINE | re.DOTALL)
+    m = re.search(r"^## Quantity options\n(.*?)(?=^## |\Z)", text, re.MULTILINE | re.DOTALL)
     if not m:
-        sys.exit("docs/cli.md: no section 'Option names and quantity options'")
+        sys.exit("docs/cli.md: no section 'Quantity options'")
     table, quantities = {}, {}
     for line in m.group(1).splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]

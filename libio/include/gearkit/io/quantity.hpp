@@ -78,7 +78,8 @@ double parse_quantity_si_any_size(std::string_view text, Quantity expected, std:
 /// their unit. Model files keep their documented default units.
 bool option_needs_unit(Quantity q);
 
-/// Two accepted spellings of a quantity, for a message or a help line ("7.5kW, 7500 W").
+/// Two accepted spellings of a quantity that option_needs_unit, for a message ("7.5kW, 7500 W");
+/// empty for any other quantity.
 std::string_view unit_examples(Quantity q);
 
 /// As parse_quantity_si for the value of an option: a bare number of a quantity that
