@@ -352,6 +352,11 @@ std::pair<double, double> parse_si_and_number(std::string_view text, Quantity ex
     value = std::numeric_limits<double>::denorm_min();  // "1e-400" is not 0: let the range refuse it
   double factor = 1.0;
   if (rest.empty()) {
+    // A bare power was kW in gear pair files and W in dyn models and options: no bare-number
+    // unit of power is obvious, so a power needs its unit wherever it is read (docs/units.md).
+    if (expected == Quantity::power)
+      throw QuantityError(fmt::format("expected {} with its unit ({}), found {}", describe(expected),
+                                      unit_examples(expected), quoted(t)));
     if (!default_unit.empty()) factor = unit_factor_si(default_unit, expected);
   } else {
     const std::string ascii = ascii_unit(rest);
