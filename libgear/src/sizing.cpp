@@ -34,8 +34,10 @@ void check(const SizingInput& in) {
           fmt::format("expected a centre distance > 0 mm, found {}", in.centre_distance.value_or(0.0)));
   require(std::isfinite(in.x_sum_min) && std::isfinite(in.x_sum_max) && in.x_sum_min <= in.x_sum_max, "centre_distance",
           fmt::format("expected shift sum limits min <= max, found {} and {}", in.x_sum_min, in.x_sum_max));
+  // With hunting teeth every z2 within the tolerance is tried; with a centre distance one shift per pair.
+  const long long z2_per_z1 = in.hunting_tooth ? static_cast<long long>(std::ceil(2.0 * in.ratio_tolerance * in.ratio * in.z1_max)) + 1 : 1;
   const long long n = static_cast<long long>(in.modules.empty() ? iso54_series1().size() : in.modules.size()) *
-                      (in.z1_max - in.z1_min + 1) * static_cast<long long>(in.shifts.size());
+                      (in.z1_max - in.z1_min + 1) * (in.centre_distance ? 1LL : static_cast<long long>(in.shifts.size())) * z2_per_z1;
   require(n <= kMaxSizingCombinations, "modules",
           fmt::format("{} module x tooth count x shift combinations exceed the limit of {}", n, kMaxSizingCombinations));
 }
