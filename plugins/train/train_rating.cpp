@@ -280,6 +280,11 @@ void report_meshes(io::Report& report, const std::vector<MeshRating>& rated) {
     j["K_gamma"] = m.input.K_gamma;
     list.push_back(j);
     for (const auto& w : m.rating.warnings) report.warnings.push_back(fmt::format("mesh '{}': {}", m.mesh, w));
+    if (m.input.method == gg::RatingMethod::iso6336 && m.input.face_load.model == gg::FaceLoadModel::sun && std::isfinite(m.rating.f_sh)) {
+      report.notes.push_back(fmt::format("Mesh '{}': face load by the sun model ({} planets, B* = {:g}, no bending term): f_sh = {:.3f} um, "
+                                         "K_Hbeta = {:.3f} (docs/rating.md, \"Face load factor\").",
+                                         m.mesh, m.input.face_load.planets, m.rating.B_star, m.rating.f_sh, m.rating.K_Hbeta));
+    }
   }
   report.tables.push_back(std::move(t));
   if (!weakest_text.empty()) report.notes.push_back("Weakest: " + weakest_text + ".");

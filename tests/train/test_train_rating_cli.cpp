@@ -153,6 +153,8 @@ TEST(TrainRating, SunFaceLoadFollowsTheSunModel) {
   const double c = sun["c_gamma_beta"].get<double>();
   const double K = 1.0 + c * F_betay / (2.0 * F_m_per_b);
   EXPECT_NEAR(f["K_Hbeta"].get<double>(), K <= 2.0 ? K : std::sqrt(2.0 * c * F_betay / F_m_per_b), 1e-9);
+  const CliRun text = run("'" + kFile + "' --torque sun=40 --rate");
+  EXPECT_NE(text.out.find("Mesh 's-p': face load by the sun model (3 planets, B* = 3"), std::string::npos) << text.out;
   // The planet-ring mesh keeps the pinion (planet) on its pin, centred: B* = 1, K' = 0, no face_load entry.
   EXPECT_FALSE(nlohmann::json::parse(r.out)["rating"]["meshes"][1].contains("face_load"));
 }
@@ -170,7 +172,8 @@ TEST(TrainRating, PerMeshRatingInputs) {
   EXPECT_DOUBLE_EQ(m[0]["factors"]["K_Hbeta"].get<double>(), 1.3);
   EXPECT_DOUBLE_EQ(m[0]["factors"]["K_A"].get<double>(), 1.5);
   EXPECT_DOUBLE_EQ(m[1]["factors"]["K_Hbeta"].get<double>(), b[1]["factors"]["K_Hbeta"].get<double>());  // other mesh as before
-  // Choosing the pinion-on-shaft model for the sun gives Eq. 43 with B* = 1: f_sh = F_m/b 0.023 (b/d_1)^2.
+  // Choosing the pinion-on-shaft model for the sun gives Eq. 43 with B* = 1 instead of 3: F_betax
+  // (Eq. 38) drops by 1.33 F_m/b 0.023 (3 - 1) (b/d_1)^2.
   const std::string shaft = edited("sun_shaft.yaml", "- {gears: [s, p], carrier: carrier}",
                                    "- {gears: [s, p], carrier: carrier, rating: {face_load: {model: pinion-shaft}}}");
   const CliRun s = run("'" + shaft + "' --torque sun=40 --rate --format json");
@@ -178,7 +181,9 @@ TEST(TrainRating, PerMeshRatingInputs) {
   const auto sun = nlohmann::json::parse(s.out)["rating"]["meshes"][0];
   const auto& f = sun["factors"];
   const double F_m_per_b = sun["F_t_N"].get<double>() * f["K_A"].get<double>() * f["K_gamma"].get<double>() * f["K_v"].get<double>() / 20.0;
-  EXPECT_NEAR(sun["face_load"]["f_sh_um"].get<double>(), F_m_per_b * 0.023 * std::pow(20.0 / 36.75, 2.0), 1e-9);
+  EXPECT_NEAR(b[0]["F_betax_um"].get<double>() - sun["F_betax_um"].get<double>(), 1.33 * F_m_per_b * 0.023 * 2.0 * std::pow(20.0 / 36.75, 2.0),
+              1e-9);
+  EXPECT_FALSE(sun.contains("face_load"));  // the plain pinion on a centred shaft: reported as before
   // A bad value in a mesh's rating is reported at its key.
   int line = 0;
   const std::string bad = edited("mesh_quality.yaml", "- {gears: [s, p], carrier: carrier}",
