@@ -140,14 +140,54 @@ double dynamic_factor(double N, double N_S, const DynamicCoefficients& C, const 
   return 1.0;
 }
 
-double shaft_deflection_misalignment(double F_m_per_b, double b, double d_1, double K_prime, double l, double s, double d_sh) {
+double shaft_deflection_misalignment(double F_m_per_b, double b, double d_1, double K_prime, double l, double s, double d_sh,
+                                     double B_star) {
   const double offset = d_sh > 0.0 ? K_prime * l * s / (d_1 * d_1) * std::pow(d_1 / d_sh, 4) : 0.0;
-  const double gamma = (std::fabs(1.0 + offset - 0.3) + 0.3) * (b / d_1) * (b / d_1);
+  const double gamma = (std::fabs(B_star + offset - 0.3) + 0.3) * (b / d_1) * (b / d_1);
   return F_m_per_b * 0.023 * gamma;
 }
 
-double initial_equivalent_misalignment(double f_sh, double f_ma, double F_m_per_b, double f_Hbeta) {
-  return std::max({1.33 * f_sh + f_ma, 0.005 * F_m_per_b, 0.5 * f_Hbeta});
+double power_split_factor(double k_percent) { return 1.0 + 2.0 * (100.0 - k_percent) / k_percent; }
+
+const char* to_string(ShaftArrangement arrangement) {
+  static constexpr const char* kNames[] = {"a", "b", "c", "d", "e"};
+  return kNames[static_cast<int>(arrangement)];
+}
+
+double shaft_constant_K_prime(ShaftArrangement arrangement, bool stiffening) {
+  // Figure 13: {with stiffening, without stiffening}.
+  static constexpr double kK[5][2] = {{0.48, 0.8}, {-0.48, -0.8}, {1.33, 1.33}, {-0.36, -0.6}, {-0.6, -1.0}};
+  return kK[static_cast<int>(arrangement)][stiffening ? 0 : 1];
+}
+
+double shaft_offset_limit(ShaftArrangement arrangement) {
+  return arrangement == ShaftArrangement::a || arrangement == ShaftArrangement::b ? 0.3 : 0.5;
+}
+
+const char* to_string(HelixModification modification) {
+  switch (modification) {
+    case HelixModification::none: return "none";
+    case HelixModification::helix_correction: return "helix-correction";
+    case HelixModification::helix_correction_and_crowning: return "helix-correction-and-crowning";
+    case HelixModification::crowning: return "crowning";
+    case HelixModification::end_relief: return "end-relief";
+  }
+  return "none";
+}
+
+MisalignmentConstants misalignment_constants(HelixModification modification) {
+  switch (modification) {
+    case HelixModification::none: return {1.0, 1.0};
+    case HelixModification::helix_correction: return {0.1, 1.0};
+    case HelixModification::helix_correction_and_crowning: return {0.1, 0.5};
+    case HelixModification::crowning: return {0.5, 0.5};
+    case HelixModification::end_relief: return {0.7, 0.7};
+  }
+  return {1.0, 1.0};
+}
+
+double initial_equivalent_misalignment(double f_sh, double f_ma, double F_m_per_b, double f_Hbeta, MisalignmentConstants B) {
+  return std::max({1.33 * B.B_1 * f_sh + B.B_2 * f_ma, 0.005 * F_m_per_b, 0.5 * f_Hbeta});
 }
 
 double running_in_allowance_beta(double F_betax, double sigma_Hlim, bool surface_hardened, bool cast_iron, double v) {

@@ -21,6 +21,8 @@ namespace iso = iso6336;
 RatingError::RatingError(std::string field, const std::string& message)
     : std::invalid_argument(message), field_(std::move(field)) {}
 
+const char* to_string(FaceLoadModel model) { return model == FaceLoadModel::sun ? "sun" : "pinion-shaft"; }
+
 const char* to_string(RatingMethod method) {
   switch (method) {
     case RatingMethod::iso6336: return "iso6336";
@@ -130,6 +132,22 @@ void dynamic_factor(const Mesh& m, const RatingInput& in, PairRating& r) {
   r.K_v = iso::dynamic_factor(r.N, r.N_S, iso::dynamic_coefficients(m.eps_gamma), B);
 }
 
+// f_sh by Eq. 43/44 (7.6.4) from the face-load input: the pinion on its shaft with K', l, s, d_sh
+// and B* of the power split, or the sun of a planetary stage (B* = planets, no bending term).
+double shaft_misalignment(const Mesh& m, const FaceLoadInput& f, double F_m_per_b, PairRating& r) {
+  if (f.model == FaceLoadModel::sun) {
+    r.K_prime = 0.0;
+    r.B_star = f.planets;
+    return iso::shaft_deflection_misalignment(F_m_per_b, m.b, m.d[0], 0.0, 0.0, 0.0, 0.0, r.B_star);
+  }
+  r.B_star = iso::power_split_factor(f.torque_percent);
+  r.K_prime = 0.0;
+  if (!f.has_shaft()) return iso::shaft_deflection_misalignment(F_m_per_b, m.b, m.d[0], 0.0, 0.0, 0.0, 0.0, r.B_star);
+  const bool stiffening = f.stiffening.value_or(m.d[0] / f.d_sh >= 1.15);
+  r.K_prime = std::isnan(f.K_prime) ? iso::shaft_constant_K_prime(f.arrangement, stiffening) : f.K_prime;
+  return iso::shaft_deflection_misalignment(F_m_per_b, m.b, m.d[0], r.K_prime, f.l, f.s, f.d_sh, r.B_star);
+}
+
 // K_Hbeta by method C and K_Fbeta (ISO 6336-1:2019 7.6, 7.7).
 void face_load_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
   const double F_m_per_b = r.F_t * in.K_A * r.K_gamma * r.K_v / m.b;
@@ -141,8 +159,9 @@ void face_load_factors(const Mesh& m, const RatingInput& in, PairRating& r) {
       r.F_betax = in.F_betax;
     } else {
       require_deviation(in.f_ma, "f_ma", "face load factor K_Hbeta (method C)");
-      r.f_sh = std::isfinite(in.f_sh) ? in.f_sh : iso::shaft_deflection_misalignment(F_m_per_b, m.b, m.d[0], 0.0, 0.0, 0.0, 0.0);
-      r.F_betax = iso::initial_equivalent_misalignment(r.f_sh, in.f_ma, F_m_per_b, in.f_Hbeta);
+      r.f_sh = std::isfinite(in.f_sh) ? in.f_sh : shaft_misalignment(m, in.face_load, F_m_per_b, r);
+      r.F_betax = iso::initial_equivalent_misalignment(r.f_sh, in.f_ma, F_m_per_b, in.f_Hbeta,
+                                                      iso::misalignment_constants(in.face_load.modification));
     }
     double y_beta = 0.0;
     for (int i = 0; i < 2; ++i) {
@@ -205,7 +224,28 @@ void deviations_of_quality(const Mesh& m, RatingInput& in) {
 
 }  // namespace
 
+namespace {
+
+void validate_face_load(const FaceLoadInput& f) {
+  const bool lengths = std::isfinite(f.l) && f.l >= 0.0 && std::isfinite(f.s) && f.s >= 0.0 && std::isfinite(f.d_sh) && f.d_sh >= 0.0;
+  require(lengths, "face_load", [&] {
+    return fmt::format("expected a bearing span l >= 0 mm, a pinion offset s >= 0 mm and a shaft diameter d_sh >= 0 mm, found {}, {}, {}",
+                       f.l, f.s, f.d_sh);
+  });
+  require(!f.has_shaft() || (f.l > 0.0 && f.d_sh > 0.0), "face_load", [&] {
+    return fmt::format("the pinion shaft needs its bearing span l > 0 mm and its diameter d_sh > 0 mm, found {} and {}", f.l, f.d_sh);
+  });
+  require(std::isnan(f.K_prime) || std::isfinite(f.K_prime), "face_load", [&] { return fmt::format("expected a finite K', found {}", f.K_prime); });
+  require(std::isfinite(f.torque_percent) && f.torque_percent > 0.0 && f.torque_percent <= 100.0, "face_load", [&] {
+    return fmt::format("expected the percentage k of the pinion torque on this mesh in (0, 100], found {}", f.torque_percent);
+  });
+  require(f.planets >= 1, "face_load", [&] { return fmt::format("expected at least 1 planet on the sun, found {}", f.planets); });
+}
+
+}  // namespace
+
 void validate(const RatingInput& in) {
+  validate_face_load(in.face_load);
   require(std::isfinite(in.T_1) && in.T_1 > 0.0, "T_1", [&] { return fmt::format("expected a torque > 0 N m, found {}", in.T_1); });
   require(std::isfinite(in.n_1) && in.n_1 > 0.0, "n_1", [&] { return fmt::format("expected a speed > 0 1/min, found {}", in.n_1); });
   require(std::isfinite(in.K_A) && in.K_A >= 1.0, "K_A", [&] { return fmt::format("expected an application factor >= 1, found {}", in.K_A); });
@@ -294,6 +334,12 @@ PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairRes
     }
   }
   r.imposed = in.factors;
+  const FaceLoadInput& f = in.face_load;
+  if (in.method == RatingMethod::iso6336 && f.model == FaceLoadModel::pinion_shaft && f.has_shaft() && std::isnan(f.K_prime) &&
+      f.s / f.l > iso::shaft_offset_limit(f.arrangement)) {
+    r.warnings.push_back(fmt::format("pinion offset s/l = {:.3f} beyond {} of ISO 6336-1 Figure 13 (arrangement {}): K' there is an extrapolation",
+                                     f.s / f.l, iso::shaft_offset_limit(f.arrangement), iso::to_string(f.arrangement)));
+  }
   detail::safety_warnings(in, r);
   return r;
 }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
+#include <optional>
 
 namespace gearkit::gear {
 
@@ -28,8 +30,14 @@ void check(const SizingInput& in) {
   require(in.width_module_min >= 0.0 && in.width_module_min <= 100.0, "width_module",
           fmt::format("expected b/m_n 0..100, found {}", in.width_module_min));
   require(in.count >= 1 && in.count <= 100, "count", fmt::format("expected 1..100 candidates, found {}", in.count));
+  require(!in.centre_distance || (std::isfinite(*in.centre_distance) && *in.centre_distance > 0.0), "centre_distance",
+          fmt::format("expected a centre distance > 0 mm, found {}", in.centre_distance.value_or(0.0)));
+  require(std::isfinite(in.x_sum_min) && std::isfinite(in.x_sum_max) && in.x_sum_min <= in.x_sum_max, "centre_distance",
+          fmt::format("expected shift sum limits min <= max, found {} and {}", in.x_sum_min, in.x_sum_max));
+  // With hunting teeth every z2 within the tolerance is tried; with a centre distance one shift per pair.
+  const long long z2_per_z1 = in.hunting_tooth ? static_cast<long long>(std::ceil(2.0 * in.ratio_tolerance * in.ratio * in.z1_max)) + 1 : 1;
   const long long n = static_cast<long long>(in.modules.empty() ? iso54_series1().size() : in.modules.size()) *
-                      (in.z1_max - in.z1_min + 1) * static_cast<long long>(in.shifts.size());
+                      (in.z1_max - in.z1_min + 1) * (in.centre_distance ? 1LL : static_cast<long long>(in.shifts.size())) * z2_per_z1;
   require(n <= kMaxSizingCombinations, "modules",
           fmt::format("{} module x tooth count x shift combinations exceed the limit of {}", n, kMaxSizingCombinations));
 }
@@ -48,6 +56,7 @@ struct Trial {
   GearPairInput geometry;
   double margin = -1;  // min(S_H/S_Hmin, S_F/S_Fmin) over both gears
   double S_H = 0, S_F = 0;
+  double a = 0;  // working centre distance of the geometry
 };
 
 Trial rate_at_width(GearPairInput geometry, const RatingInput& load, double b, long long& evaluated) {
@@ -61,6 +70,7 @@ Trial rate_at_width(GearPairInput geometry, const RatingInput& load, double b, l
     return t;
   }
   if (unusable(g)) return t;
+  t.a = g.pair.a;
   ++evaluated;
   PairRating r;
   try {
@@ -105,11 +115,49 @@ std::optional<SizingCandidate> smallest_width(const GearPairInput& geometry, con
   c.u = static_cast<double>(geometry.z2) / geometry.z1;
   c.d1 = d1;
   c.d2 = d2;
-  c.a = 0.5 * (d1 + d2);
+  // V-0 pairs keep the reference centre distance as before; shifted pairs (a required centre
+  // distance) report the working one the geometry computed.
+  c.a = in.centre_distance ? best.a : 0.5 * (d1 + d2);
   c.S_H = best.S_H;
   c.S_F = best.S_F;
   c.volume = c.b * std::numbers::pi / 4.0 * (d1 * d1 + d2 * d2);
   return c;
+}
+
+// The wheel tooth counts tried with pinion z1: the nearest to u z1, or with hunting teeth every z2
+// within the ratio tolerance that shares no factor with z1.
+std::vector<int> wheel_teeth(const SizingInput& in, int z1) {
+  auto within = [&](int z2) { return z2 >= z1 && std::fabs(static_cast<double>(z2) / z1 - in.ratio) <= in.ratio_tolerance * in.ratio; };
+  std::vector<int> z2s;
+  if (!in.hunting_tooth) {
+    const int z2 = static_cast<int>(std::lround(in.ratio * z1));
+    if (within(z2)) z2s.push_back(z2);
+    return z2s;
+  }
+  const int lo = static_cast<int>(std::floor(in.ratio * (1.0 - in.ratio_tolerance) * z1));
+  const int hi = static_cast<int>(std::ceil(in.ratio * (1.0 + in.ratio_tolerance) * z1));
+  for (int z2 = lo; z2 <= hi; ++z2) {
+    if (within(z2) && std::gcd(z1, z2) == 1) z2s.push_back(z2);
+  }
+  return z2s;
+}
+
+// The shifts of a pair at the required centre distance (compute_gear_pair's centre-distance path,
+// balanced sliding), or nullopt when the distance cannot be met within the shift sum limits.
+std::optional<GearPairInput> at_centre_distance(GearPairInput g, const SizingInput& in) {
+  GearPairInput t = g;
+  t.centre_distance = *in.centre_distance;
+  t.split = ShiftSplit::balanced_sliding;
+  try {
+    const GearPairResult r = compute_gear_pair(t);
+    const double sum = r.gear[0].x + r.gear[1].x;
+    if (!(sum >= in.x_sum_min && sum <= in.x_sum_max)) return std::nullopt;
+    g.x1 = r.gear[0].x;
+    g.x2 = r.gear[1].x;
+    return g;
+  } catch (const GeometryError&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -119,24 +167,30 @@ SizingResult size_gear_pair(const SizingInput& in) {
   SizingResult result;
   const std::vector<double> modules = in.modules.empty() ? iso54_series1() : in.modules;
   std::vector<SizingCandidate> all;
+  const std::vector<double> x1s = in.centre_distance ? std::vector<double>{0.0} : in.shifts;
   for (double m : modules) {
     for (int z1 = in.z1_min; z1 <= in.z1_max; ++z1) {
-      const int z2 = static_cast<int>(std::lround(in.ratio * z1));
-      if (z2 < z1 || std::fabs(static_cast<double>(z2) / z1 - in.ratio) > in.ratio_tolerance * in.ratio) continue;
-      for (double x : in.shifts) {
-        ++result.combinations;
-        GearPairInput g;
-        g.z1 = z1;
-        g.z2 = z2;
-        g.module = m;
-        g.pressure_angle = in.pressure_angle;
-        g.helix_angle = in.helix_angle;
-        g.h_aP = in.h_aP;
-        g.h_fP = in.h_fP;
-        g.rho_fP = in.rho_fP;
-        g.x1 = x;
-        g.x2 = -x;
-        if (auto c = smallest_width(g, in, result.evaluated)) all.push_back(*c);
+      for (int z2 : wheel_teeth(in, z1)) {
+        for (double x : x1s) {
+          ++result.combinations;
+          GearPairInput g;
+          g.z1 = z1;
+          g.z2 = z2;
+          g.module = m;
+          g.pressure_angle = in.pressure_angle;
+          g.helix_angle = in.helix_angle;
+          g.h_aP = in.h_aP;
+          g.h_fP = in.h_fP;
+          g.rho_fP = in.rho_fP;
+          g.x1 = x;
+          g.x2 = -x;
+          if (in.centre_distance) {
+            const auto shifted = at_centre_distance(g, in);
+            if (!shifted) continue;
+            g = *shifted;
+          }
+          if (auto c = smallest_width(g, in, result.evaluated)) all.push_back(*c);
+        }
       }
     }
   }

@@ -24,8 +24,6 @@ using io::Quantity;
 
 double mm(MapReader& r, const char* key, double default_mm) { return r.quantity_or(key, Quantity::length, "mm", default_mm / 1000.0) * 1000.0; }
 
-double um(MapReader& r, const char* key) { return r.quantity(key, Quantity::length, "um") * 1e6; }
-
 void read_geometry(MapReader& r, PairFile& f) {
   gg::GearPairInput& g = f.geometry;
   auto teeth = [&](const char* key) {
@@ -117,45 +115,6 @@ void read_load(MapReader& load, gg::RatingInput& r, PairFile& f) {
   load.finish();
 }
 
-void read_rating_details(MapReader& r, gg::RatingInput& in, PairFile& f) {
-  read_accuracy(r, in);
-  f.marks["quality"] = r.mark("quality");
-  in.nu_40 = r.optional_number("oil_viscosity").value_or(in.nu_40);
-  if (r.has("flank_roughness") && r.has("flank_rz")) io::fail_at(r.mark("flank_rz"), "give flank_roughness (R_a) or flank_rz, not both");
-  if (r.has("flank_roughness")) in.R_z_flank.fill(6.0 * um(r, "flank_roughness"));
-  if (r.has("flank_rz")) in.R_z_flank.fill(um(r, "flank_rz"));
-  in.s_pr = r.optional_number("protuberance").value_or(0.0);
-  if (r.has("root_roughness")) in.R_z_root.fill(um(r, "root_roughness"));
-  if (auto d = r.optional_node("deviations")) {
-    MapReader dv(*d, r.file(), "deviations");
-    for (auto [key, field] : {std::pair{"f_pb", &gg::RatingInput::f_pb}, {"f_falpha", &gg::RatingInput::f_falpha},
-                              {"F_betax", &gg::RatingInput::F_betax}, {"f_ma", &gg::RatingInput::f_ma},
-                              {"f_sh", &gg::RatingInput::f_sh}, {"tip_relief", &gg::RatingInput::C_a}}) {
-      if (dv.has(key)) in.*field = um(dv, key);
-      f.marks[key] = dv.mark(key);
-    }
-    dv.finish();
-  }
-  in.S_Hmin = r.optional_number("min_safety_pitting").value_or(in.S_Hmin);
-  in.S_Fmin = r.optional_number("min_safety_bending").value_or(in.S_Fmin);
-  in.limited_pitting = r.boolean_or("limited_pitting", false);
-  in.optimum_long_life = r.boolean_or("optimum_long_life", false);
-  if (auto fs = r.optional_node("factors")) {
-    MapReader fr(*fs, r.file(), "factors");
-    for (const auto& kv : *fs) {
-      const std::string name = kv.first.as<std::string>();
-      try {
-        parse_factor(fmt::format("{}={}", name, io::scalar_text(kv.second, r.file(), "factor")), in.factors);
-      } catch (const std::invalid_argument& e) {
-        io::fail_at(io::mark_of(kv.first, r.file()), e.what());
-      }
-      fr.node(name);
-    }
-    f.marks["factor"] = fr.mark();
-    fr.finish();
-  }
-}
-
 }  // namespace
 
 PairFile read_pair_file(const std::string& path) {
@@ -172,7 +131,7 @@ PairFile read_pair_file(const std::string& path) {
     f.marks["material1"] = materials.mark("gear1");
     f.marks["material2"] = materials.mark("gear2");
     materials.finish();
-    read_rating_details(r, in, f);
+    read_rating_keys(r, in, f.marks);
     MapReader lr(*load, doc.file, "load");
     in.life_h = read_life(lr, in.life_h);  // before the spectrum shares
     read_load(lr, in, f);

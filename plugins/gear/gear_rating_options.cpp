@@ -123,6 +123,36 @@ void read_quality_and_deviations(const io::po::variables_map& vm, gg::RatingInpu
   }
 }
 
+// The pinion shaft and flank line modification of K_Hbeta method C (ISO 6336-1 7.6, Figure 13, Table 10).
+void read_face_load_options(const io::po::variables_map& vm, gg::RatingInput& r) {
+  gg::FaceLoadInput& f = r.face_load;
+  auto length = [&](const char* key) {
+    const double v = quantity(vm, key, io::Quantity::length, "mm") * 1000.0;
+    if (!(std::isfinite(v) && v >= 0.0)) fail(key, fmt::format("expected a length >= 0 mm, found {}", text_of(vm, key).substr(0, 60)));
+    return v;
+  };
+  if (given(vm, "shaft-span")) f.l = length("shaft-span");
+  if (given(vm, "pinion-offset")) f.s = length("pinion-offset");
+  if (given(vm, "shaft-diameter")) f.d_sh = length("shaft-diameter");
+  namespace iso = gg::iso6336;
+  if (given(vm, "shaft-arrangement")) {
+    f.arrangement = choice<iso::ShaftArrangement>(vm, "shaft-arrangement", {{"a", iso::ShaftArrangement::a}, {"b", iso::ShaftArrangement::b},
+                                                                            {"c", iso::ShaftArrangement::c}, {"d", iso::ShaftArrangement::d},
+                                                                            {"e", iso::ShaftArrangement::e}});
+  }
+  if (given(vm, "stiffening")) f.stiffening = choice<bool>(vm, "stiffening", {{"yes", true}, {"no", false}});
+  if (given(vm, "torque-share")) {
+    f.torque_percent = positive(vm, "torque-share");
+    if (f.torque_percent > 100.0) fail("torque-share", fmt::format("expected a percentage in (0, 100], found {}", f.torque_percent));
+  }
+  if (given(vm, "helix-modification")) {
+    f.modification = choice<iso::HelixModification>(vm, "helix-modification",
+                                                     {{"none", iso::HelixModification::none}, {"helix-correction", iso::HelixModification::helix_correction},
+                                                      {"helix-correction-and-crowning", iso::HelixModification::helix_correction_and_crowning},
+                                                      {"crowning", iso::HelixModification::crowning}, {"end-relief", iso::HelixModification::end_relief}});
+  }
+}
+
 void read_surface_and_lubrication(const io::po::variables_map& vm, gg::RatingInput& r) {
   if (given(vm, "oil-viscosity")) r.nu_40 = positive(vm, "oil-viscosity");
   if (given(vm, "flank-roughness")) {
@@ -206,6 +236,14 @@ void add_rating_options(io::po::options_description& desc) {
       ("f-ma", text()->value_name("LEN"), "mesh misalignment from manufacturing f_ma (default f_HbetaT of --quality) (bare number: um)")
       ("f-sh", text()->value_name("LEN"), "misalignment from shaft deflection f_sh (default ISO 6336-1 Eq. 43) (bare number: um)")
       ("tip-relief", text()->value_name("LEN"), "tip relief C_a (default: by running-in) (bare number: um)")
+      ("shaft-span", text()->value_name("LEN"), "K_Hbeta: bearing span l of the pinion shaft (ISO 6336-1 Eq. 43) (bare number: mm)")
+      ("pinion-offset", text()->value_name("LEN"), "K_Hbeta: offset s of the pinion from the middle of the span (bare number: mm)")
+      ("shaft-diameter", text()->value_name("LEN"), "K_Hbeta: outer diameter d_sh of the pinion shaft (bare number: mm)")
+      ("shaft-arrangement", text()->value_name("a|b|c|d|e"), "K_Hbeta: arrangement of ISO 6336-1 Figure 13 for K' (default a)")
+      ("stiffening", text()->value_name("yes|no"), "K_Hbeta: K' with or without stiffening (default: yes when d_1/d_sh >= 1.15)")
+      ("torque-share", text()->value_name("PERCENT"), "K_Hbeta: percentage k of the pinion torque on this mesh, B* (default 100)")
+      ("helix-modification", text()->value_name("none|helix-correction|helix-correction-and-crowning|crowning|end-relief"),
+       "K_Hbeta: flank line modification, B_1 and B_2 of ISO 6336-1 Table 10 (default none)")
       ("rim1", text()->value_name("LEN"), "rim thickness of gear 1 (default solid) (bare number: mm)")
       ("rim2", text()->value_name("LEN"), "rim thickness of gear 2 (default solid) (bare number: mm)")
       ("min-safety-pitting", text()->value_name("S"), "required S_Hmin (default 1.0)")
@@ -230,7 +268,8 @@ bool rating_requested(const io::po::variables_map& vm) { return given(vm, "torqu
 bool any_rating_option(const io::po::variables_map& vm) {
   for (const char* key : {"torque1", "power", "speed1", "material1", "material2", "method", "application-factor", "life",
                           "oil-viscosity", "flank-roughness", "flank-rz", "protuberance", "root-roughness", "f-pb", "f-falpha", "F-betax", "f-ma", "f-sh",
-                          "tip-relief", "rim1", "rim2", "min-safety-pitting", "min-safety-bending", "root-shift", "agma-quality",
+                          "tip-relief", "shaft-span", "pinion-offset", "shaft-diameter", "shaft-arrangement", "stiffening", "torque-share",
+                          "helix-modification", "rim1", "rim2", "min-safety-pitting", "min-safety-bending", "root-shift", "agma-quality",
                           "reliability", "mounting", "lewis-profile", "factor"}) {
     if (given(vm, key)) return true;
   }
@@ -242,6 +281,7 @@ gg::RatingInput read_rating_options(const io::po::variables_map& vm) {
   read_load(vm, r);
   read_materials(vm, r);
   read_quality_and_deviations(vm, r);
+  read_face_load_options(vm, r);
   read_surface_and_lubrication(vm, r);
   read_method_options(vm, r);
   return r;
@@ -272,7 +312,7 @@ std::string option_for_rating_field(const std::string& field) {
       {"material1", "material1"}, {"material2", "material2"}, {"f_pb", "f-pb"}, {"f_falpha", "f-falpha"},
       {"f_ma", "f-ma"}, {"F_betax", "F-betax"}, {"face_width", "face-width"}, {"Q_v", "agma-quality"},
       {"reliability", "reliability"}, {"factor", "factor"}, {"R_z_flank", "flank-roughness"}, {"R_z_root", "root-roughness"},
-      {"s_R", "rim1"}, {"tooth_root", "x1"}, {"spectrum", "life"}};
+      {"s_R", "rim1"}, {"face_load", "shaft-span"}, {"tooth_root", "x1"}, {"spectrum", "life"}};
   const auto it = options.find(field);
   return it == options.end() ? field : it->second;
 }

@@ -31,6 +31,33 @@ const char* method_title(gg::RatingMethod m) {
   return "";
 }
 
+// The face-load inputs are shown only when they differ from the plain pinion on a centred shaft,
+// so that ratings without them read as before.
+bool face_load_given(const gg::RatingInput& in) {
+  const gg::FaceLoadInput& f = in.face_load;
+  return in.method == gg::RatingMethod::iso6336 &&
+         (f.model != gg::FaceLoadModel::pinion_shaft || f.has_shaft() || f.torque_percent != 100.0 ||
+          f.modification != gg::iso6336::HelixModification::none);
+}
+
+void face_load_rows(io::Table& t, const gg::RatingInput& in, const gg::PairRating& r) {
+  if (!face_load_given(in)) return;
+  auto row = [&t](std::string name, std::string v) { t.add_row({std::move(name), std::move(v)}); };
+  const gg::FaceLoadInput& f = in.face_load;
+  std::string model = gg::to_string(f.model);
+  if (f.model == gg::FaceLoadModel::sun) model += fmt::format(" ({} planets)", f.planets);
+  if (f.model == gg::FaceLoadModel::pinion_shaft && f.has_shaft()) {
+    model += fmt::format(" (arrangement {}, l = {:g} mm, s = {:g} mm, d_sh = {:g} mm)", gg::iso6336::to_string(f.arrangement), f.l, f.s, f.d_sh);
+  }
+  row("face load model", model);
+  row("helix modification (B_1, B_2)", fmt::format("{} ({:g}, {:g})", gg::iso6336::to_string(f.modification),
+                                                   gg::iso6336::misalignment_constants(f.modification).B_1,
+                                                   gg::iso6336::misalignment_constants(f.modification).B_2));
+  if (std::isfinite(r.K_prime)) row("shaft constant K'", num(r.K_prime));
+  if (std::isfinite(r.B_star)) row("torsion constant B*", num(r.B_star));
+  if (std::isfinite(r.f_sh)) row("shaft misalignment f_sh [um]", num(r.f_sh, 3));
+}
+
 void pair_rows(io::Table& t, const gg::PairRating& r) {
   auto row = [&t](std::string name, std::string v) { t.add_row({std::move(name), std::move(v)}); };
   const bool iso = r.method == gg::RatingMethod::iso6336;
@@ -162,6 +189,13 @@ nlohmann::json rating_json(const gg::RatingInput& in, const gg::PairRating& r) {
     put(j, k, v);
   }
   if (r.method == gg::RatingMethod::iso6336) j["resonance_range"] = gg::iso6336::to_string(r.range);
+  if (face_load_given(in)) {
+    j["face_load"] = {{"model", gg::to_string(in.face_load.model)},
+                      {"helix_modification", gg::iso6336::to_string(in.face_load.modification)}};
+    for (const auto& [k, v] : std::initializer_list<std::pair<const char*, double>>{{"K_prime", r.K_prime}, {"B_star", r.B_star}, {"f_sh_um", r.f_sh}}) {
+      put(j["face_load"], k, v);
+    }
+  }
   for (const auto& [k, v] : r.extra) put(j, k, v);
   j["gears"] = {gear_rating_json(r.gear[0]), gear_rating_json(r.gear[1])};
   return j;
@@ -170,6 +204,7 @@ nlohmann::json rating_json(const gg::RatingInput& in, const gg::PairRating& r) {
 void add_rating_report(io::Report& report, const gg::RatingInput& in, const gg::PairRating& r) {
   io::Table pair{fmt::format("Load capacity: {}", method_title(r.method)), {"quantity", "value"}, {}};
   pair_rows(pair, r);
+  face_load_rows(pair, in, r);
   io::Table gears{"Load capacity of the gears", {"quantity", "gear 1", "gear 2"}, {}};
   gear_rows(gears, r);
   report.tables.push_back(std::move(pair));

@@ -1,12 +1,17 @@
 // YAML readers of the rating input shared by gear-pair and train files.
 #include "gear_rating_yaml.hpp"
 
+#include "gear_rating_options.hpp"
+
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace gearkit::plugins::gear {
 
@@ -55,6 +60,86 @@ void read_accuracy(MapReader& r, gg::RatingInput& in) {
   }
   const std::string edition = r.choice("iso1328_edition", {"2013", "1995"}, "2013");
   in.iso1328_edition = edition == "1995" ? gg::Iso1328Edition::iso1995 : gg::Iso1328Edition::iso2013;
+}
+
+namespace {
+
+double length_mm(MapReader& r, const char* key, double default_mm) {
+  const double v = r.quantity_or(key, Quantity::length, "mm", default_mm / 1000.0) * 1000.0;
+  if (!(std::isfinite(v) && v >= 0.0)) io::fail_at(r.mark(key), fmt::format("expected a length >= 0 mm, found {:g} mm", v));
+  return v;
+}
+
+}  // namespace
+
+void read_face_load(MapReader& r, gg::FaceLoadInput& f) {
+  namespace iso = gg::iso6336;
+  if (r.has("model")) f.model = r.choice("model", {"pinion-shaft", "sun"}) == "sun" ? gg::FaceLoadModel::sun : gg::FaceLoadModel::pinion_shaft;
+  if (auto n = r.optional_integer("planets")) {
+    if (*n < 1 || *n > 1000) io::fail_at(r.mark("planets"), fmt::format("expected 1..1000 planets, found {}", *n));
+    f.planets = static_cast<int>(*n);
+  }
+  f.l = length_mm(r, "span", f.l);
+  f.s = length_mm(r, "offset", f.s);
+  f.d_sh = length_mm(r, "shaft_diameter", f.d_sh);
+  if (r.has("arrangement")) f.arrangement = static_cast<iso::ShaftArrangement>(r.choice("arrangement", {"a", "b", "c", "d", "e"})[0] - 'a');
+  if (r.has("stiffening")) f.stiffening = r.boolean("stiffening");
+  if (auto k = r.optional_number("K_prime")) f.K_prime = *k;
+  if (auto k = r.optional_number("torque_share")) {
+    if (!(*k > 0.0 && *k <= 100.0)) io::fail_at(r.mark("torque_share"), fmt::format("expected a percentage in (0, 100], found {:g}", *k));
+    f.torque_percent = *k;
+  }
+  if (r.has("helix_modification")) {
+    static const std::vector<std::string> kNames = {"none", "helix-correction", "helix-correction-and-crowning", "crowning", "end-relief"};
+    const std::string m = r.choice("helix_modification", kNames);
+    f.modification = static_cast<iso::HelixModification>(std::find(kNames.begin(), kNames.end(), m) - kNames.begin());
+  }
+  r.finish();
+}
+
+void read_rating_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, io::SourceMark>& marks) {
+  auto um = [](MapReader& m, const char* key) { return m.quantity(key, Quantity::length, "um") * 1e6; };
+  read_accuracy(r, in);
+  marks["quality"] = r.mark("quality");
+  in.nu_40 = r.optional_number("oil_viscosity").value_or(in.nu_40);
+  if (r.has("flank_roughness") && r.has("flank_rz")) io::fail_at(r.mark("flank_rz"), "give flank_roughness (R_a) or flank_rz, not both");
+  if (r.has("flank_roughness")) in.R_z_flank.fill(6.0 * um(r, "flank_roughness"));
+  if (r.has("flank_rz")) in.R_z_flank.fill(um(r, "flank_rz"));
+  in.s_pr = r.optional_number("protuberance").value_or(in.s_pr);
+  if (r.has("root_roughness")) in.R_z_root.fill(um(r, "root_roughness"));
+  if (auto d = r.optional_node("deviations")) {
+    MapReader dv(*d, r.file(), "deviations");
+    for (auto [key, field] : {std::pair{"f_pb", &gg::RatingInput::f_pb}, {"f_falpha", &gg::RatingInput::f_falpha},
+                              {"F_betax", &gg::RatingInput::F_betax}, {"f_ma", &gg::RatingInput::f_ma},
+                              {"f_sh", &gg::RatingInput::f_sh}, {"tip_relief", &gg::RatingInput::C_a}}) {
+      if (dv.has(key)) in.*field = um(dv, key);
+      marks[key] = dv.mark(key);
+    }
+    dv.finish();
+  }
+  if (auto fl = r.optional_node("face_load")) {
+    MapReader fr(*fl, r.file(), "face_load");
+    marks["face_load"] = fr.mark();
+    read_face_load(fr, in.face_load);
+  }
+  in.S_Hmin = r.optional_number("min_safety_pitting").value_or(in.S_Hmin);
+  in.S_Fmin = r.optional_number("min_safety_bending").value_or(in.S_Fmin);
+  in.limited_pitting = r.boolean_or("limited_pitting", in.limited_pitting);
+  in.optimum_long_life = r.boolean_or("optimum_long_life", in.optimum_long_life);
+  if (auto fs = r.optional_node("factors")) {
+    MapReader fr(*fs, r.file(), "factors");
+    for (const auto& kv : *fs) {
+      const std::string name = kv.first.as<std::string>();
+      try {
+        parse_factor(fmt::format("{}={}", name, io::scalar_text(kv.second, r.file(), "factor")), in.factors);
+      } catch (const std::invalid_argument& e) {
+        io::fail_at(io::mark_of(kv.first, r.file()), e.what());
+      }
+      fr.node(name);
+    }
+    marks["factor"] = fr.mark();
+    fr.finish();
+  }
 }
 
 }  // namespace gearkit::plugins::gear

@@ -9,6 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <map>
 #include <string>
 
 namespace gearkit::plugins::gear {
@@ -24,5 +25,21 @@ gearkit::gear::Material read_material(const YAML::Node& node, const std::string&
 /// `iso1328_edition` (2013 or 1995, default 2013) of the mapping `r` into `in`.
 /// @throws io::InputError at the key for a value that is not a whole number or not an edition.
 void read_accuracy(io::MapReader& r, gearkit::gear::RatingInput& in);
+
+/// Reads the `face_load:` mapping (docs/rating.md, "Face load factor"): model (pinion-shaft |
+/// sun), planets, span, offset, shaft_diameter, arrangement (a..e), stiffening, K_prime,
+/// torque_share (percent), helix_modification. Keys not given keep `f`'s values.
+/// @throws io::InputError at the offending key for a bad value or an unknown key; the
+///         consistency of the values is checked by the rating (RatingError "face_load").
+void read_face_load(io::MapReader& r, gearkit::gear::FaceLoadInput& f);
+
+/// Reads the rating keys of a gear-pair file from the mapping `r` into `in` (one reader for a pair
+/// file's top level and a train mesh's `rating:`; docs/rating.md): quality, iso1328_edition,
+/// oil_viscosity, flank_roughness | flank_rz, protuberance, root_roughness, deviations {f_pb,
+/// f_falpha, F_betax, f_ma, f_sh, tip_relief}, face_load, min_safety_pitting, min_safety_bending,
+/// limited_pitting, optimum_long_life, factors. Keys not given keep `in`'s values; `marks` gets
+/// where each RatingInput field was written. Does not call r.finish().
+/// @throws io::InputError at the offending key.
+void read_rating_keys(io::MapReader& r, gearkit::gear::RatingInput& in, std::map<std::string, io::SourceMark>& marks);
 
 }  // namespace gearkit::plugins::gear

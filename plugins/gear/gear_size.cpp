@@ -11,6 +11,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <numbers>
 
 namespace gearkit::plugins::gear {
 
@@ -21,7 +22,8 @@ namespace {
 constexpr std::string_view kUsage =
     "gearkit gear size --ratio U --torque1 TORQUE | --power POWER --speed1 SPEED --material1 M --material2 M [--quality 6] [--life 20000] "
     "[--ratio-tolerance 0.02] [--modules 2,2.5,3] [--z1-min 14] [--z1-max 40] [--shifts 0,0.2,0.4] [--helix-angle 0] "
-    "[--pressure-angle 20] [--width-ratio-max 1] [--width-module-min 8] [--count 5] [--format text|json|csv|md|html]";
+    "[--pressure-angle 20] [--width-ratio-max 1] [--width-module-min 8] [--centre-distance A] [--hunting-tooth] [--count 5] "
+    "[--format text|json|csv|md|html]";
 
 [[noreturn]] void fail(std::string_view key, std::string_view message) { io::fail_option(fmt::format("--{}", key), message); }
 
@@ -82,13 +84,36 @@ gg::SizingInput read_sizing(const io::po::variables_map& vm) {
   if (vm.count("shifts")) s.shifts = list(vm, "shifts");
   if (vm.count("helix-angle")) s.helix_angle = angle(vm, "helix-angle");
   if (vm.count("pressure-angle")) s.pressure_angle = angle(vm, "pressure-angle");
+  if (vm.count("centre-distance")) {
+    try {
+      s.centre_distance = io::parse_quantity_si(vm["centre-distance"].as<std::string>(), io::Quantity::length, "mm") * 1000.0;
+    } catch (const io::QuantityError& e) {
+      fail("centre-distance", e.what());
+    }
+  }
+  s.hunting_tooth = vm["hunting-tooth"].as<bool>();
   return s;
+}
+
+std::string accuracy_text(const gg::RatingInput& load) {
+  return load.quality ? fmt::format("{} grade {}", gg::to_string(load.iso1328_edition), *load.quality) : std::string("deviations as given");
+}
+
+// Every design input, so that a table of candidates never travels without what it was sized for.
+std::string sizing_heading(const gg::SizingInput& in) {
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  const gg::RatingInput& l = in.load;
+  return fmt::format("Gear sizing: u = {:g} (+-{:g} %), T_1 = {:.1f} N m at {:g} 1/min, K_A = {:g}, alpha_n = {:g} deg, beta = {:g} deg, "
+                     "{}, life {:g} h, {} / {}, {}, a = {}{}",
+                     in.ratio, 100.0 * in.ratio_tolerance, l.T_1, l.n_1, l.K_A, in.pressure_angle * kDeg, in.helix_angle * kDeg,
+                     accuracy_text(l), l.life_h, l.material[0].name, l.material[1].name, gg::to_string(l.method),
+                     in.centre_distance ? fmt::format("{:g} mm", *in.centre_distance) : std::string("free (V-0)"),
+                     in.hunting_tooth ? ", hunting-tooth pairs only (gcd(z1, z2) = 1)" : "");
 }
 
 io::Report sizing_report(const gg::SizingInput& in, const gg::SizingResult& r) {
   io::Report report;
-  report.title = fmt::format("Gear sizing: u = {:g}, T_1 = {:.1f} N m at {:g} 1/min, {} / {}, life {:g} h ({})", in.ratio, in.load.T_1,
-                             in.load.n_1, in.load.material[0].name, in.load.material[1].name, in.load.life_h, gg::to_string(in.load.method));
+  report.title = sizing_heading(in);
   io::Table t{"Smallest pairs that meet S_Hmin and S_F,min (by volume)",
               {"m_n [mm]", "z1", "z2", "u", "x1", "x2", "b [mm]", "a [mm]", "d1 [mm]", "S_H", "S_F", "volume [cm^3]"}, {}};
   nlohmann::json list = nlohmann::json::array();
@@ -99,11 +124,12 @@ io::Report sizing_report(const gg::SizingInput& in, const gg::SizingResult& r) {
                     {"a_mm", c.a}, {"d1_mm", c.d1}, {"d2_mm", c.d2}, {"S_H", c.S_H}, {"S_F", c.S_F}, {"volume_mm3", c.volume}});
   }
   report.tables.push_back(std::move(t));
-  report.notes.push_back(fmt::format("{} combinations of module, z1 and V-0 shift tried, {} ratings; S_Hmin = {:g}, S_Fmin = {:g}; "
+  const std::string tried = in.centre_distance ? fmt::format("module, z1 and z2 with the shift sum for a = {:g} mm (x1 + x2 in [{:g}, {:g}])",
+                                                              *in.centre_distance, in.x_sum_min, in.x_sum_max)
+                                               : std::string("module, z1 and V-0 shift");
+  report.notes.push_back(fmt::format("{} combinations of {} tried, {} ratings; S_Hmin = {:g}, S_Fmin = {:g}; "
                                      "{}; candidates with undercut, interference or a contact ratio below 1 are left out.",
-                                     r.combinations, r.evaluated, in.load.S_Hmin, in.load.S_Fmin,
-                                     in.load.quality ? fmt::format("{} grade {}", gg::to_string(in.load.iso1328_edition), *in.load.quality)
-                                                     : std::string("deviations as given")));
+                                     r.combinations, tried, r.evaluated, in.load.S_Hmin, in.load.S_Fmin, accuracy_text(in.load)));
   if (r.best.empty()) report.warnings.push_back("no candidate meets the required safety factors: allow larger modules, wider faces or a stronger material");
   report.json["sizing"] = {{"candidates", list}, {"combinations", r.combinations}, {"ratings", r.evaluated}};
   return report;
@@ -125,6 +151,8 @@ int run_gear_size_command(plugin::CommandContext& context) {
       ("pressure-angle", text()->value_name("ANGLE"), "normal pressure angle (default 20 deg) (bare number: deg)")
       ("width-ratio-max", text()->value_name("B/D1"), "largest face width over pinion diameter (default 1)")
       ("width-module-min", text()->value_name("B/M"), "smallest face width over module (default 8)")
+      ("centre-distance", text()->value_name("LEN"), "required working centre distance, mm: the shift sum follows from it (default free, V-0)")
+      ("hunting-tooth", io::po::bool_switch(), "only hunting-tooth pairs, gcd(z1, z2) = 1 (every z2 within the ratio tolerance is tried)")
       ("count", text()->value_name("N"), "candidates shown (default 5)");
   io::add_common_options(desc);
   io::po::positional_options_description none;
@@ -138,7 +166,7 @@ int run_gear_size_command(plugin::CommandContext& context) {
     result = gg::size_gear_pair(input);
   } catch (const gg::RatingError& e) {
     const std::string f = e.field();
-    const std::string option = f == "ratio_tolerance" ? "ratio-tolerance" : f == "width_ratio" ? "width-ratio-max" : f == "width_module" ? "width-module-min" : f == "z1" ? "z1-min"
+    const std::string option = f == "centre_distance" ? "centre-distance" : f == "ratio_tolerance" ? "ratio-tolerance" : f == "width_ratio" ? "width-ratio-max" : f == "width_module" ? "width-module-min" : f == "z1" ? "z1-min"
                                : (f == "ratio" || f == "modules" || f == "shifts" || f == "count") ? f : option_for_rating_field(f);
     io::fail_option(fmt::format("--{}", option), e.what());
   }

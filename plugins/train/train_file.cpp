@@ -125,6 +125,7 @@ void read_meshes(io::MapReader& root, gt::TrainDescription& d, std::vector<Field
     spec.gear_b = io::scalar_text(gears[1], root.file(), "a gear name");
     if (r.has("carrier")) spec.carrier = r.string("carrier");
     spec.efficiency = r.optional_number("efficiency").value_or(default_efficiency);
+    r.optional_node("rating");  // read by `train --rate` (train_rating.cpp)
     r.finish();
     marks.push_back(marks_of(r, {"gears", "carrier", "efficiency"}));
     d.meshes.push_back(spec);

@@ -34,7 +34,13 @@ struct GearData {
   io::SourceMark mark;
 };
 
-// The `rating:` section and the gears' `face_width` / `material`.
+// A mesh's own `rating:` (the rating keys of a gear-pair file), read when the mesh is rated.
+struct MeshData {
+  YAML::Node node;  ///< null: none
+  std::string file;
+};
+
+// The `rating:` section, the gears' `face_width` / `material` and the meshes' `rating:`.
 struct RatingData {
   gg::RatingInput base;
   double face_width_mm = kNaN;
@@ -43,6 +49,7 @@ struct RatingData {
   io::SourceMark mark;
   std::map<std::string, io::SourceMark> marks;  ///< RatingInput field -> where its key was written
   std::map<std::string, GearData> gears;
+  std::vector<MeshData> meshes;  ///< in file order (the model's mesh order)
 };
 
 // The key of the `rating:` section that sets each RatingInput field a rating error can name.
@@ -92,6 +99,7 @@ RatingData read_rating_data(const std::string& path) {
     if (const YAML::Node m = item["material"]) g.material = plugins::gear::read_material(m, doc.file, "material");
     d.gears[item["name"].as<std::string>()] = g;
   }
+  for (const YAML::Node& item : doc.root["meshes"]) d.meshes.push_back({item["rating"], doc.file});
   return d;
 }
 
@@ -175,6 +183,36 @@ int meshes_of(const gt::TrainModel& model, gt::GearId g) {
 
 namespace {
 
+// A sun: an external gear on the carrier's axis meshing with planets (more than one).
+bool is_sun_mesh(const gt::TrainModel& model, const MeshPlan& p) {
+  const gt::Gear& g1 = model.gear(p.pinion);
+  const gt::Gear& g2 = model.gear(p.wheel);
+  return p.planets > 1 && g1.kind == gt::GearKind::external && !model.is_planet(g1.member) && model.is_planet(g2.member);
+}
+
+// The mesh's own `rating:` keys over the file's `rating:` section (plugins/gear read_rating_keys),
+// and the face-load model: a sun mesh takes FaceLoadModel::sun (the sun twisted by all planets, no
+// bending by a bearing span; docs/rating.md) unless its `face_load:` names a model or a shaft.
+std::map<std::string, io::SourceMark> read_mesh_rating(const gt::TrainModel& model, const RatingData& d, gt::MeshId k,
+                                                       const MeshPlan& p, gg::RatingInput& in) {
+  std::map<std::string, io::SourceMark> marks;
+  in.face_load.planets = p.planets;
+  bool model_given = false;
+  if (k < d.meshes.size() && d.meshes[k].node) {
+    io::MapReader r(d.meshes[k].node, d.meshes[k].file, "mesh rating");
+    plugins::gear::read_rating_keys(r, in, marks);
+    if (!r.has("iso1328_edition")) in.iso1328_edition = d.base.iso1328_edition;
+    if (auto K_A = r.optional_number("application_factor")) {
+      in.K_A = *K_A;
+      marks["K_A"] = r.mark("application_factor");
+    }
+    model_given = d.meshes[k].node["face_load"] && d.meshes[k].node["face_load"]["model"];
+    r.finish();
+  }
+  if (is_sun_mesh(model, p) && !model_given && !in.face_load.has_shaft()) in.face_load.model = gg::FaceLoadModel::sun;
+  return marks;
+}
+
 struct MeshRating {
   std::string mesh, pinion, wheel;
   gg::RatingInput input;
@@ -194,6 +232,7 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
   }
   MeshRating m{mesh.name, g1.name, g2.name, d.base, {}};
   gg::RatingInput& in = m.input;
+  const std::map<std::string, io::SourceMark> mesh_marks = read_mesh_rating(model, d, k, p, in);
   in.T_1 = T_pinion_total / p.planets;
   in.n_1 = n_pinion_rpm;
   in.material = {material_of(d, g1), material_of(d, g2)};
@@ -208,7 +247,8 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
   } catch (const gg::GeometryError& e) {
     io::fail_at(gear_data(d, g1).mark, fmt::format("mesh '{}': {}", mesh.name, e.what()));
   } catch (const gg::RatingError& e) {
-    io::fail_at(mark_for_field(d, e.field()), fmt::format("mesh '{}': {}", mesh.name, e.what()));
+    const auto it = mesh_marks.find(e.field());
+    io::fail_at(it != mesh_marks.end() ? it->second : mark_for_field(d, e.field()), fmt::format("mesh '{}': {}", mesh.name, e.what()));
   }
   return m;
 }
@@ -240,6 +280,11 @@ void report_meshes(io::Report& report, const std::vector<MeshRating>& rated) {
     j["K_gamma"] = m.input.K_gamma;
     list.push_back(j);
     for (const auto& w : m.rating.warnings) report.warnings.push_back(fmt::format("mesh '{}': {}", m.mesh, w));
+    if (m.input.method == gg::RatingMethod::iso6336 && m.input.face_load.model == gg::FaceLoadModel::sun && std::isfinite(m.rating.f_sh)) {
+      report.notes.push_back(fmt::format("Mesh '{}': face load by the sun model ({} planets, B* = {:g}, no bending term): f_sh = {:.3f} um, "
+                                         "K_Hbeta = {:.3f} (docs/rating.md, \"Face load factor\").",
+                                         m.mesh, m.input.face_load.planets, m.rating.B_star, m.rating.f_sh, m.rating.K_Hbeta));
+    }
   }
   report.tables.push_back(std::move(t));
   if (!weakest_text.empty()) report.notes.push_back("Weakest: " + weakest_text + ".");

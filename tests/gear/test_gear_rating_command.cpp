@@ -6,8 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 #include <string>
 
@@ -123,6 +125,34 @@ TEST(GearRatingCli, BadPairFilesNameTheLine) {
   expect_error(run("'" + kExample1 + "' --z1 20"), "'--z1'");
 }
 
+// K_Hbeta from the pinion shaft: the options and a pair file's `face_load:` give the same f_sh, which
+// follows ISO 6336-1 Eq. 43 (K' = 0.8: Figure 13 a without stiffening, d_1/d_sh = 141.34/140 < 1.15).
+TEST(GearRatingCli, FaceLoadFromThePinionShaft) {
+  const CliRun opts = run(kPair + kLoad + "--quality 5 --shaft-span 400 --pinion-offset 60 --shaft-diameter 140 --format json");
+  ASSERT_EQ(opts.status, 0) << opts.err;
+  const auto j = nlohmann::json::parse(opts.out)["rating"];
+  const double d_1 = 17 * 8.0 / std::cos(15.8 * std::acos(-1.0) / 180.0);
+  const double F_m_per_b = j["F_t_N"].get<double>() * j["factors"]["K_v"].get<double>() / 100.0;
+  const double bending = 0.8 * 400.0 * 60.0 / (d_1 * d_1) * std::pow(d_1 / 140.0, 4.0);
+  EXPECT_NEAR(j["face_load"]["K_prime"].get<double>(), 0.8, 1e-12);
+  EXPECT_NEAR(j["face_load"]["f_sh_um"].get<double>(), F_m_per_b * 0.023 * (std::fabs(1.0 + bending - 0.3) + 0.3) * std::pow(100.0 / d_1, 2.0),
+              1e-9);
+  const std::string file = write("shaft.yaml", "z1: 17\nz2: 103\nmodule: 8\nhelix_angle: 15.8\ncentre_distance: 500\nx1: 0.145\n"
+                                               "face_width: 100\nrack: {dedendum: 1.4, root_radius: 0.39}\n"
+                                               "materials: {gear1: 18CrNiMo7-6, gear2: 18CrNiMo7-6}\nquality: 5\n"
+                                               "face_load: {span: 400 mm, offset: 60 mm, shaft_diameter: 140 mm, arrangement: a}\n"
+                                               "load: {torque1: 9 kN*m, speed1: 360}\n");
+  const CliRun f = run("'" + file + "' --format json");
+  ASSERT_EQ(f.status, 0) << f.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(f.out)["rating"]["face_load"]["f_sh_um"].get<double>(), j["face_load"]["f_sh_um"].get<double>());
+  // Incomplete shaft data: an error at the option or the key.
+  expect_error(run(kPair + kLoad + "--quality 5 --shaft-span 400"), "'--shaft-span'");
+  const std::string bad = write("bad_shaft.yaml", "z1: 17\nz2: 103\nmodule: 8\nface_width: 100\n"
+                                                  "materials: {gear1: 18CrNiMo7-6, gear2: 18CrNiMo7-6}\nquality: 5\n"
+                                                  "face_load: {span: 400 mm, arrangement: f}\nload: {torque1: 900, speed1: 360}\n");
+  expect_error(run("'" + bad + "'"), "bad_shaft.yaml:7:");
+}
+
 TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
   const CliRun r = run("size --ratio 3.5 --torque1 500N*m --speed1 1450rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
                        "--quality 6 --format json");
@@ -151,6 +181,28 @@ TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
   };
   EXPECT_GE(rate(best["b_mm"].get<double>()), 1.0);
   EXPECT_LT(rate(best["b_mm"].get<double>() - 1.0), 1.0);
+}
+
+// The heading carries every design input; --centre-distance and --hunting-tooth reach the sizing.
+TEST(GearSizeCli, HeadingEchoesTheDesignInputs) {
+  const CliRun r = run("size --ratio 3.5 --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 42CrMo4 --quality 7 "
+                       "--life 30000 --application-factor 1.35 --helix-angle 12 --centre-distance 160 --hunting-tooth --modules 2,2.5,3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string heading = r.out.substr(0, r.out.find('\n'));
+  for (const char* part : {"u = 3.5", "T_1 = 500.0 N m", "1450 1/min", "K_A = 1.35", "beta = 12 deg", "alpha_n = 20 deg", "grade 7",
+                           "life 30000 h", "18CrNiMo7-6 / 42CrMo4", "iso6336", "a = 160 mm", "hunting-tooth"}) {
+    EXPECT_NE(heading.find(part), std::string::npos) << part << " missing in: " << heading;
+  }
+  const CliRun j = run("size --ratio 3.5 --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --quality 6 "
+                       "--helix-angle 12 --centre-distance 160 --hunting-tooth --modules 2,2.5,3 --count 10 --format json");
+  ASSERT_EQ(j.status, 0) << j.err;
+  const auto c = nlohmann::json::parse(j.out)["sizing"]["candidates"];
+  ASSERT_FALSE(c.empty());
+  for (const auto& k : c) {
+    EXPECT_NEAR(k["a_mm"].get<double>(), 160.0, 1e-6);
+    EXPECT_EQ(std::gcd(k["z1"].get<int>(), k["z2"].get<int>()), 1);
+  }
+  expect_error(run("size --ratio 3 --torque1 500 --speed1 1450 --material1 C45 --material2 C45 --centre-distance -5"), "'--centre-distance'");
 }
 
 TEST(GearSizeCli, BadInput) {

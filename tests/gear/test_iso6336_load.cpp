@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 namespace iso = gearkit::gear::iso6336;
 
@@ -95,4 +97,78 @@ TEST(DynamicFactor, TipReliefByRunningInOfTwoMaterials) {
   EXPECT_NEAR(iso::tip_relief_by_running_in(700.0), 8.5106, 1e-4);
   EXPECT_NEAR(iso::mesh_tip_relief_by_running_in(1500.0, 700.0), 5.2530, 1e-4);
   EXPECT_DOUBLE_EQ(iso::mesh_tip_relief_by_running_in(1500.0, 1500.0), iso::tip_relief_by_running_in(1500.0));
+}
+
+// ISO 6336-1:2019 7.6.4, Eq. 43 with Eq. 44 (spur and single helical), written out here on its own:
+// f_sh = F_m/b 0.023 (|B* + K' l s / d_1^2 (d_1/d_sh)^4 - 0.3| + 0.3) (b/d_1)^2.
+namespace {
+double f_sh_eq43(double F_m_per_b, double b, double d_1, double K_prime, double l, double s, double d_sh, double B_star) {
+  const double bending = K_prime * l * s / (d_1 * d_1) * std::pow(d_1 / d_sh, 4.0);
+  return F_m_per_b * 0.023 * (std::fabs(B_star + bending - 0.3) + 0.3) * std::pow(b / d_1, 2.0);
+}
+}  // namespace
+
+TEST(FaceLoadMethodC, ShaftDeflectionByHand) {
+  // F_m/b = 300 N/mm, b = 60, d_1 = 80, l = 200, s = 30, d_sh = 60 mm; arrangement a with
+  // stiffening (d_1/d_sh = 1.33 >= 1.15): K' = 0.48. By hand: K' l s/d_1^2 (d_1/d_sh)^4 =
+  // 0.48 * 0.9375 * 256/81 = 1.42222; gamma = (1 + 1.42222) * 0.5625 = 1.3625;
+  // f_sh = 300 * 0.023 * 1.3625 = 9.40125 um.
+  const double K = iso::shaft_constant_K_prime(iso::ShaftArrangement::a, true);
+  EXPECT_DOUBLE_EQ(K, 0.48);
+  EXPECT_NEAR(iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, K, 200.0, 30.0, 60.0), 9.40125, 1e-9);
+  EXPECT_NEAR(iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, K, 200.0, 30.0, 60.0), f_sh_eq43(300.0, 60.0, 80.0, K, 200.0, 30.0, 60.0, 1.0), 1e-12);
+  // Power split k = 50 %: B* = 1 + 2 (100 - 50)/50 = 3; gamma = (3 + 1.42222) * 0.5625 = 2.4875,
+  // f_sh = 300 * 0.023 * 2.4875 = 17.16375 um.
+  EXPECT_DOUBLE_EQ(iso::power_split_factor(100.0), 1.0);
+  EXPECT_DOUBLE_EQ(iso::power_split_factor(50.0), 3.0);
+  EXPECT_NEAR(iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, K, 200.0, 30.0, 60.0, iso::power_split_factor(50.0)), 17.16375, 1e-9);
+  // Arrangement b (K' = -0.48): the offset works against torsion: |1 - 1.42222 - 0.3| + 0.3 = 1.02222,
+  // gamma = 0.575, f_sh = 300 * 0.023 * 0.575 = 3.9675 um.
+  EXPECT_NEAR(iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, iso::shaft_constant_K_prime(iso::ShaftArrangement::b, true), 200.0,
+                                                 30.0, 60.0),
+              3.9675, 1e-9);
+}
+
+TEST(FaceLoadMethodC, FigureThirteenConstants) {
+  // ISO 6336-1 Figure 13: K' with / without stiffening, and the s/l range of each arrangement.
+  const std::pair<iso::ShaftArrangement, std::array<double, 3>> table[] = {
+      {iso::ShaftArrangement::a, {0.48, 0.8, 0.3}}, {iso::ShaftArrangement::b, {-0.48, -0.8, 0.3}},
+      {iso::ShaftArrangement::c, {1.33, 1.33, 0.5}}, {iso::ShaftArrangement::d, {-0.36, -0.6, 0.5}},
+      {iso::ShaftArrangement::e, {-0.6, -1.0, 0.5}}};
+  for (const auto& [arrangement, v] : table) {
+    EXPECT_DOUBLE_EQ(iso::shaft_constant_K_prime(arrangement, true), v[0]) << iso::to_string(arrangement);
+    EXPECT_DOUBLE_EQ(iso::shaft_constant_K_prime(arrangement, false), v[1]) << iso::to_string(arrangement);
+    EXPECT_DOUBLE_EQ(iso::shaft_offset_limit(arrangement), v[2]) << iso::to_string(arrangement);
+  }
+}
+
+TEST(FaceLoadMethodC, LargerOffsetLargerMisalignmentForPositiveK) {
+  // For K' > 0 the bending term adds to torsion: f_sh grows with s/l (0 .. the Figure 13 limit).
+  double previous = 0.0;
+  for (double s = 0.0; s <= 60.0; s += 5.0) {
+    const double f = iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, 0.8, 200.0, s, 60.0);
+    EXPECT_GT(f, previous) << "s = " << s;
+    previous = f;
+  }
+  // s = 0: no bending term whatever K' (the pinion in the middle of the span).
+  EXPECT_DOUBLE_EQ(iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, 0.8, 200.0, 0.0, 60.0),
+                   iso::shaft_deflection_misalignment(300.0, 60.0, 80.0, 0.0, 0.0, 0.0, 0.0));
+}
+
+TEST(FaceLoadMethodC, HelixModificationConstants) {
+  // ISO 6336-1:2019 Table 10 (2006: Table 8): B_1, B_2 of Eq. 38.
+  const std::pair<iso::HelixModification, std::array<double, 2>> table[] = {
+      {iso::HelixModification::none, {1.0, 1.0}}, {iso::HelixModification::helix_correction, {0.1, 1.0}},
+      {iso::HelixModification::helix_correction_and_crowning, {0.1, 0.5}}, {iso::HelixModification::crowning, {0.5, 0.5}},
+      {iso::HelixModification::end_relief, {0.7, 0.7}}};
+  for (const auto& [m, B] : table) {
+    EXPECT_DOUBLE_EQ(iso::misalignment_constants(m).B_1, B[0]) << iso::to_string(m);
+    EXPECT_DOUBLE_EQ(iso::misalignment_constants(m).B_2, B[1]) << iso::to_string(m);
+  }
+  // F_betax = 1.33 B_1 f_sh + B_2 f_ma: helix correction, f_sh = 10, f_ma = 8 -> 1.33 + 8 = 9.33 um.
+  EXPECT_NEAR(iso::initial_equivalent_misalignment(10.0, 8.0, 100.0, 0.0, iso::misalignment_constants(iso::HelixModification::helix_correction)),
+              9.33, 1e-12);
+  // Crowning: 0.5 (13.3 + 8) = 10.65 um.
+  EXPECT_NEAR(iso::initial_equivalent_misalignment(10.0, 8.0, 100.0, 0.0, iso::misalignment_constants(iso::HelixModification::crowning)),
+              10.65, 1e-12);
 }

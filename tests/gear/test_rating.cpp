@@ -478,6 +478,107 @@ TEST(IsoTr6336_30Example1, FaceLoadFactorMethodC) {
 
 namespace {
 
+// ISO 6336-1:2019 7.6.4 Eq. 43/44, written out independently of libgear.
+double f_sh_eq43(double F_m_per_b, double b, double d_1, double K_prime, double l, double s, double d_sh, double B_star) {
+  return F_m_per_b * 0.023 * (std::fabs(B_star + K_prime * l * s / (d_1 * d_1) * std::pow(d_1 / d_sh, 4.0) - 0.3) + 0.3) *
+         std::pow(b / d_1, 2.0);
+}
+
+// K_Hbeta by Eq. 35/36 from F_betax with y_beta of Table 11 for case-carburized gears (0.15 F_betax, at most 6 um).
+double K_Hbeta_eq35(double c_gamma_beta, double F_betax, double F_m_per_b) {
+  const double F_betay = F_betax - std::min(0.15 * F_betax, 6.0);
+  const double K = 1.0 + c_gamma_beta * F_betay / (2.0 * F_m_per_b);
+  return K <= 2.0 ? K : std::sqrt(2.0 * c_gamma_beta * F_betay / F_m_per_b);
+}
+
+gg::RatingInput shaft_load() {
+  auto load = tr_example1_load();
+  load.factors = gg::ImposedFactors();
+  load.f_ma = 10.0;
+  return load;
+}
+
+}  // namespace
+
+// K_Hbeta from the pinion shaft (ISO 6336-1 method C): the example's pinion (d_1 = 141.34 mm) on a
+// shaft of d_sh = 140 mm (d_1/d_sh < 1.15: K' without stiffening), span l = 400 mm, offset s.
+TEST(IsoTr6336_30Example1, FaceLoadFromThePinionShaft) {
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  const double d_1 = geo.gear[0].d;
+  auto load = shaft_load();
+  load.face_load.l = 400.0;
+  load.face_load.s = 60.0;
+  load.face_load.d_sh = 140.0;
+  const auto p = gg::rate_gear_pair(in, geo, load);
+  EXPECT_DOUBLE_EQ(p.K_prime, 0.8);  // Figure 13 a, without stiffening
+  EXPECT_DOUBLE_EQ(p.B_star, 1.0);
+  const double F_m_per_b = p.F_t * p.K_v / 100.0;  // K_A = K_gamma = 1
+  EXPECT_NEAR(p.f_sh, f_sh_eq43(F_m_per_b, 100.0, d_1, 0.8, 400.0, 60.0, 140.0, 1.0), 1e-9);
+  EXPECT_NEAR(p.F_betax, 1.33 * p.f_sh + 10.0, 1e-9);  // Eq. 38, B_1 = B_2 = 1
+  EXPECT_NEAR(p.K_Hbeta, K_Hbeta_eq35(p.c_gamma_beta, p.F_betax, F_m_per_b), 1e-9);
+  EXPECT_TRUE(p.warnings.empty() || std::none_of(p.warnings.begin(), p.warnings.end(), [](const std::string& w) {
+                return w.find("Figure 13") != std::string::npos;
+              }));
+  // Stiffening imposed: K' = 0.48 (Figure 13 a).
+  load.face_load.stiffening = true;
+  EXPECT_DOUBLE_EQ(gg::rate_gear_pair(in, geo, load).K_prime, 0.48);
+}
+
+TEST(IsoTr6336_30Example1, FaceLoadGrowsWithThePinionOffset) {
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = shaft_load();
+  load.face_load.l = 400.0;
+  load.face_load.d_sh = 140.0;
+  double previous = 0.0;
+  for (double s : {0.0, 30.0, 60.0, 90.0, 120.0}) {  // s/l up to 0.3, the limit of arrangement a
+    load.face_load.s = s;
+    const double K = gg::rate_gear_pair(in, geo, load).K_Hbeta;
+    EXPECT_GT(K, previous) << "s = " << s;
+    previous = K;
+  }
+  // Beyond s/l = 0.3 the rating warns that Figure 13 is extrapolated.
+  load.face_load.s = 150.0;
+  const auto p = gg::rate_gear_pair(in, geo, load);
+  EXPECT_TRUE(std::any_of(p.warnings.begin(), p.warnings.end(), [](const std::string& w) { return w.find("Figure 13") != std::string::npos; }));
+}
+
+TEST(IsoTr6336_30Example1, HelixCorrectionAndSunModel) {
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  const double d_1 = geo.gear[0].d;
+  auto load = shaft_load();
+  load.face_load.l = 400.0;
+  load.face_load.s = 60.0;
+  load.face_load.d_sh = 140.0;
+  const auto plain = gg::rate_gear_pair(in, geo, load);
+  load.face_load.modification = gg::iso6336::HelixModification::helix_correction;
+  const auto corrected = gg::rate_gear_pair(in, geo, load);
+  // Table 10: helix correction B_1 = 0.1, B_2 = 1 in F_betax = 1.33 B_1 f_sh + B_2 f_ma.
+  EXPECT_NEAR(corrected.F_betax, 1.33 * 0.1 * corrected.f_sh + 10.0, 1e-9);
+  EXPECT_LT(corrected.K_Hbeta, plain.K_Hbeta);
+  // A sun with 3 planets: no bending term, torsion by all three planets' torque: B* = 3 in Eq. 43.
+  gg::RatingInput sun = shaft_load();
+  sun.face_load.model = gg::FaceLoadModel::sun;
+  sun.face_load.planets = 3;
+  const auto s = gg::rate_gear_pair(in, geo, sun);
+  const double F_m_per_b = s.F_t * s.K_v / 100.0;
+  EXPECT_NEAR(s.f_sh, F_m_per_b * 0.023 * 3.0 * std::pow(100.0 / d_1, 2.0), 1e-9);
+  EXPECT_DOUBLE_EQ(s.B_star, 3.0);
+  // Incomplete shaft data is an input error naming the face load.
+  gg::RatingInput bad = shaft_load();
+  bad.face_load.l = 400.0;
+  try {
+    gg::rate_gear_pair(in, geo, bad);
+    ADD_FAILURE() << "expected a RatingError";
+  } catch (const gg::RatingError& e) {
+    EXPECT_EQ(e.field(), "face_load");
+  }
+}
+
+namespace {
+
 // KISSsoft 03/2017 report "stage_03" (helical pair, ISO 6336:2006 method B; kisssoft_stage3.hpp):
 // case-carburized 18CrNiMo7-6 (sigma_Hlim 1500, sigma_Flim 430 MPa), 5000 kW at 1165.9 1/min,
 // K_A = 1.25, 175 200 h, VG 220, R_z 4.8 um flank / 20 um root, S_Hmin = 1.25, S_Fmin = 1.56.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace gg = gearkit::gear;
 
@@ -83,4 +84,59 @@ TEST(Sizing, LimitsAndBadInput) {
   s = reducer();
   s.load.T_1 = 1e9;  // nothing carries it: an empty list, not an error
   EXPECT_TRUE(gg::size_gear_pair(s).best.empty());
+}
+
+namespace {
+
+double involute(double a) { return std::tan(a) - a; }
+
+// ISO 21771: inv alpha_wt = inv alpha_t + 2 tan(alpha_n) (x1 + x2)/(z1 + z2), solved by Newton
+// (d inv/d alpha = tan^2 alpha), then a = a_d cos(alpha_t) / cos(alpha_wt) with
+// a_d = m_n (z1 + z2) / (2 cos beta). Independent of libgear's geometry.
+double working_centre_distance(const gg::SizingCandidate& c, double alpha_n, double beta) {
+  const double alpha_t = std::atan(std::tan(alpha_n) / std::cos(beta));
+  const double target = involute(alpha_t) + 2.0 * std::tan(alpha_n) * (c.x1 + c.x2) / (c.z1 + c.z2);
+  double a = alpha_t;
+  for (int i = 0; i < 50; ++i) a -= (involute(a) - target) / (std::tan(a) * std::tan(a));
+  const double a_d = c.m_n * (c.z1 + c.z2) / (2.0 * std::cos(beta));
+  return a_d * std::cos(alpha_t) / std::cos(a);
+}
+
+}  // namespace
+
+TEST(Sizing, EveryCandidateHasTheRequiredCentreDistance) {
+  gg::SizingInput s = reducer();
+  s.centre_distance = 160.0;
+  s.helix_angle = 12.0 * std::acos(-1.0) / 180.0;
+  s.count = 20;
+  const gg::SizingResult r = gg::size_gear_pair(s);
+  ASSERT_FALSE(r.best.empty());
+  bool shifted = false;
+  for (const auto& c : r.best) {
+    EXPECT_NEAR(working_centre_distance(c, s.pressure_angle, s.helix_angle), 160.0, 1e-6) << c.m_n << " " << c.z1 << "/" << c.z2;
+    EXPECT_NEAR(c.a, 160.0, 1e-6);
+    EXPECT_GE(c.x1 + c.x2, s.x_sum_min - 1e-12);
+    EXPECT_LE(c.x1 + c.x2, s.x_sum_max + 1e-12);
+    shifted = shifted || std::fabs(c.x1 + c.x2) > 1e-3;
+  }
+  EXPECT_TRUE(shifted) << "160 mm is not a reference centre distance of every pair: some need a shift sum";
+  s.centre_distance = -1.0;
+  EXPECT_THROW(gg::size_gear_pair(s), gg::RatingError);
+}
+
+TEST(Sizing, HuntingTeethShareNoFactor) {
+  gg::SizingInput s = reducer();
+  s.ratio = 4.0;  // u z1 is a multiple of z1: without the flag every pair shares the factor z1
+  s.ratio_tolerance = 0.03;
+  s.count = 20;
+  const gg::SizingResult plain = gg::size_gear_pair(s);
+  ASSERT_FALSE(plain.best.empty());
+  for (const auto& c : plain.best) EXPECT_EQ(c.z2, 4 * c.z1);
+  s.hunting_tooth = true;
+  const gg::SizingResult hunting = gg::size_gear_pair(s);
+  ASSERT_FALSE(hunting.best.empty());
+  for (const auto& c : hunting.best) {
+    EXPECT_EQ(std::gcd(c.z1, c.z2), 1) << c.z1 << "/" << c.z2;
+    EXPECT_LE(std::fabs(c.u / s.ratio - 1.0), s.ratio_tolerance + 1e-12);
+  }
 }

@@ -129,3 +129,64 @@ TEST(TrainRating, UserDefinedMaterialMap) {
   const std::string bad = edited("bad_material.yaml", "material: 18CrNiMo7-6", "material: {name: mine, sigma_Hlim: -5, sigma_Flim: 350}");
   expect_error_at(run("'" + bad + "' --torque sun=40N*m --rate"), "bad_material.yaml:");
 }
+
+// The sun of the shipped planetary floats between 3 planets: its face load is not the pinion-on-
+// shaft bending formula but the sun model of docs/rating.md: ISO 6336-1 Eq. 43 with no bending term
+// (the planets' forces balance) and the sun body twisted by all 3 planets' torque, B* = 3:
+// f_sh = F_m/b 0.023 * 3 (b/d_1)^2, b = 20 mm, d_1 = 21 * 1.75 = 36.75 mm.
+TEST(TrainRating, SunFaceLoadFollowsTheSunModel) {
+  const CliRun r = run("'" + kFile + "' --torque sun=40 --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto sun = nlohmann::json::parse(r.out)["rating"]["meshes"][0];
+  ASSERT_TRUE(sun.contains("face_load")) << sun.dump();
+  EXPECT_EQ(sun["face_load"]["model"], "sun");
+  EXPECT_DOUBLE_EQ(sun["face_load"]["B_star"].get<double>(), 3.0);
+  const auto& f = sun["factors"];
+  const double F_m_per_b = sun["F_t_N"].get<double>() * f["K_A"].get<double>() * f["K_gamma"].get<double>() * f["K_v"].get<double>() / 20.0;
+  const double f_sh = F_m_per_b * 0.023 * 3.0 * std::pow(20.0 / 36.75, 2.0);
+  EXPECT_NEAR(sun["face_load"]["f_sh_um"].get<double>(), f_sh, 1e-9);
+  // F_betax = 1.33 f_sh + f_ma (Eq. 38); y_beta = 0.15 F_betax (case-carburized, Table 11);
+  // K_Hbeta by Eq. 35/36.
+  const double F_betax = sun["F_betax_um"].get<double>();
+  const double F_betay = F_betax - std::min(0.15 * F_betax, 6.0);
+  EXPECT_NEAR(sun["F_betay_um"].get<double>(), F_betay, 1e-9);
+  const double c = sun["c_gamma_beta"].get<double>();
+  const double K = 1.0 + c * F_betay / (2.0 * F_m_per_b);
+  EXPECT_NEAR(f["K_Hbeta"].get<double>(), K <= 2.0 ? K : std::sqrt(2.0 * c * F_betay / F_m_per_b), 1e-9);
+  const CliRun text = run("'" + kFile + "' --torque sun=40 --rate");
+  EXPECT_NE(text.out.find("Mesh 's-p': face load by the sun model (3 planets, B* = 3"), std::string::npos) << text.out;
+  // The planet-ring mesh keeps the pinion (planet) on its pin, centred: B* = 1, K' = 0, no face_load entry.
+  EXPECT_FALSE(nlohmann::json::parse(r.out)["rating"]["meshes"][1].contains("face_load"));
+}
+
+// A mesh's own `rating:` takes the keys of a gear-pair file (factors, deviations, face_load, ...).
+TEST(TrainRating, PerMeshRatingInputs) {
+  const CliRun base = run("'" + kFile + "' --torque sun=40 --rate --format json");
+  ASSERT_EQ(base.status, 0) << base.err;
+  const auto b = nlohmann::json::parse(base.out)["rating"]["meshes"];
+  const std::string file = edited("mesh_rating.yaml", "- {gears: [s, p], carrier: carrier}",
+                                  "- {gears: [s, p], carrier: carrier, rating: {factors: {K_Hbeta: 1.3}, application_factor: 1.5}}");
+  const CliRun r = run("'" + file + "' --torque sun=40 --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto m = nlohmann::json::parse(r.out)["rating"]["meshes"];
+  EXPECT_DOUBLE_EQ(m[0]["factors"]["K_Hbeta"].get<double>(), 1.3);
+  EXPECT_DOUBLE_EQ(m[0]["factors"]["K_A"].get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(m[1]["factors"]["K_Hbeta"].get<double>(), b[1]["factors"]["K_Hbeta"].get<double>());  // other mesh as before
+  // Choosing the pinion-on-shaft model for the sun gives Eq. 43 with B* = 1 instead of 3: F_betax
+  // (Eq. 38) drops by 1.33 F_m/b 0.023 (3 - 1) (b/d_1)^2.
+  const std::string shaft = edited("sun_shaft.yaml", "- {gears: [s, p], carrier: carrier}",
+                                   "- {gears: [s, p], carrier: carrier, rating: {face_load: {model: pinion-shaft}}}");
+  const CliRun s = run("'" + shaft + "' --torque sun=40 --rate --format json");
+  ASSERT_EQ(s.status, 0) << s.err;
+  const auto sun = nlohmann::json::parse(s.out)["rating"]["meshes"][0];
+  const auto& f = sun["factors"];
+  const double F_m_per_b = sun["F_t_N"].get<double>() * f["K_A"].get<double>() * f["K_gamma"].get<double>() * f["K_v"].get<double>() / 20.0;
+  EXPECT_NEAR(b[0]["F_betax_um"].get<double>() - sun["F_betax_um"].get<double>(), 1.33 * F_m_per_b * 0.023 * 2.0 * std::pow(20.0 / 36.75, 2.0),
+              1e-9);
+  EXPECT_FALSE(sun.contains("face_load"));  // the plain pinion on a centred shaft: reported as before
+  // A bad value in a mesh's rating is reported at its key.
+  int line = 0;
+  const std::string bad = edited("mesh_quality.yaml", "- {gears: [s, p], carrier: carrier}",
+                                 "- {gears: [s, p], carrier: carrier, rating: {face_load: {arrangement: z}}}", &line);
+  expect_error_at(run("'" + bad + "' --torque sun=40 --rate"), "mesh_quality.yaml:" + std::to_string(line) + ":");
+}

@@ -97,14 +97,50 @@ double dynamic_factor(double N, double N_S, const DynamicCoefficients& C, const 
 
 // ---- Face load factor K_Hbeta, method C (clause 7.6) ----
 
-/// Component of the mesh misalignment from shaft and pinion deflection, simplified (7.6.4,
-/// Eq. 43 with B* = 1): f_sh = F_m/b * 0.023 * (|1 + K' l s / d_1^2 (d_1/d_sh)^4 - 0.3| + 0.3) (b/d_1)^2, um.
-/// Pass K_prime = 0 for no pinion offset data (the pinion on its own solid shaft, centred).
-double shaft_deflection_misalignment(double F_m_per_b, double b, double d_1, double K_prime, double l, double s, double d_sh);
+/// Component of the mesh misalignment from shaft and pinion deflection (7.6.4, Eq. 43 with
+/// Eq. 44 for spur and single helical gears):
+/// f_sh = F_m/b * 0.023 * (|B* + K' l s / d_1^2 (d_1/d_sh)^4 - 0.3| + 0.3) (b/d_1)^2, um.
+/// F_m/b in N/mm; b, d_1, l (bearing span), s (offset of the pinion from the middle of the span)
+/// and d_sh (outer diameter of the pinion shaft) in mm. Pass K_prime = 0 (or d_sh = 0) for no
+/// pinion offset data (the pinion centred on its own shaft); B_star = 1 when the mesh transmits
+/// all of the pinion's torque (power_split_factor).
+double shaft_deflection_misalignment(double F_m_per_b, double b, double d_1, double K_prime, double l, double s, double d_sh,
+                                     double B_star = 1.0);
 
-/// Initial equivalent misalignment F_betax = 1.33 B_1 f_sh + B_2 f_ma (7.6.2, Eq. 38 with
-/// B_1 = B_2 = 1 for no helix modification), at least F_betax,min = max(0.005 F_m/b, 0.5 f_Hbeta).
-double initial_equivalent_misalignment(double f_sh, double f_ma, double F_m_per_b, double f_Hbeta);
+/// B* = 1 + 2 (100 - k)/k (7.6.4): k is the percentage of the pinion's input torque that this
+/// mesh transmits; the rest passes through the pinion body to another mesh (power split). k in
+/// (0, 100]; 100 gives B* = 1.
+double power_split_factor(double k_percent);
+
+/// The five pinion and bearing arrangements of ISO 6336-1:2019 Figure 13 (the 2006 edition's
+/// Figure 13 too), named by their letter there.
+enum class ShaftArrangement { a, b, c, d, e };
+const char* to_string(ShaftArrangement arrangement);  ///< "a" .. "e"
+
+/// Constant K' of Figure 13 for an arrangement, with stiffening (the pinion body stiffens its
+/// shaft: pinion integral with the shaft, d_1/d_sh >= 1.15) or without (d_1/d_sh < 1.15, or a
+/// pinion shrunk or keyed on the shaft): a 0.48 / 0.8, b -0.48 / -0.8, c 1.33 / 1.33,
+/// d -0.36 / -0.6, e -0.6 / -1.0.
+double shaft_constant_K_prime(ShaftArrangement arrangement, bool stiffening);
+
+/// Largest s/l for which Figure 13 gives K': 0.3 for arrangements a and b, 0.5 for c, d and e.
+double shaft_offset_limit(ShaftArrangement arrangement);
+
+/// Flank line modifications of 7.6.2 Table 10 (Table 8 in the 2006 edition) and their constants
+/// B_1 (on f_sh) and B_2 (on f_ma) of Eq. 38: none 1/1, helix correction 0.1/1, helix correction
+/// plus crowning 0.1/0.5, crowning 0.5/0.5, end relief 0.7/0.7.
+enum class HelixModification { none, helix_correction, helix_correction_and_crowning, crowning, end_relief };
+const char* to_string(HelixModification modification);  ///< "none", "helix-correction", ...
+
+struct MisalignmentConstants {
+  double B_1 = 1, B_2 = 1;
+};
+MisalignmentConstants misalignment_constants(HelixModification modification);
+
+/// Initial equivalent misalignment F_betax = 1.33 B_1 f_sh + B_2 f_ma (7.6.2, Eq. 38; B_1 = B_2 = 1
+/// for no helix modification), at least F_betax,min = max(0.005 F_m/b, 0.5 f_Hbeta).
+double initial_equivalent_misalignment(double f_sh, double f_ma, double F_m_per_b, double f_Hbeta,
+                                       MisalignmentConstants B = {});
 
 /// Running-in allowance y_beta (7.6.3, Table 11): St/V/GGG: 320/sigma_Hlim F_betax (limited for
 /// v > 5 m/s), Eh/IF/NT/NV: 0.15 F_betax (<= 6 um), GG: 0.55 F_betax (<= 45 um). um.

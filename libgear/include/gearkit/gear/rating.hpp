@@ -74,6 +74,31 @@ enum class RootShift { generating, nominal };  ///< which profile shift feeds Y_
 enum class AgmaMounting { open, commercial, precision, extra_precision };  ///< Shigley Eq. 14-34 (C_ma)
 enum class LewisProfile { cast, cut, hobbed, ground };  ///< Barth / Shigley Eq. 14-4 (K_v)
 
+/// How f_sh of ISO 6336-1 method C is found (docs/rating.md, "Face load factor").
+enum class FaceLoadModel {
+  pinion_shaft,  ///< the pinion on its own shaft between bearings (Eq. 43 with K', l, s, d_sh and B*)
+  sun,           ///< a sun meshing with `planets` planets evenly spaced: no bending term (their forces
+                 ///< balance), the sun body twisted by all planets' torque: B* = planets, K' term 0
+};
+const char* to_string(FaceLoadModel model);  ///< "pinion-shaft", "sun"
+
+/// Inputs of K_Hbeta by ISO 6336-1:2019 method C (7.6) beyond the deviations: the pinion shaft for
+/// f_sh (Eq. 43/44, Figure 13) and the flank line modification for B_1, B_2 (Eq. 38, Table 10).
+struct FaceLoadInput {
+  FaceLoadModel model = FaceLoadModel::pinion_shaft;
+  double l = 0;     ///< bearing span of the pinion shaft, mm (0: not given; the pinion centred, K' term 0)
+  double s = 0;     ///< offset of the pinion's face centre from the middle of the span, mm (>= 0)
+  double d_sh = 0;  ///< outer diameter of the pinion shaft, mm (> 0 when l is given)
+  iso6336::ShaftArrangement arrangement = iso6336::ShaftArrangement::a;  ///< Figure 13
+  std::optional<bool> stiffening;  ///< Figure 13 column (empty: d_1/d_sh >= 1.15)
+  double K_prime = std::numeric_limits<double>::quiet_NaN();  ///< imposed K' (NaN: from the arrangement)
+  double torque_percent = 100;  ///< k of B* = 1 + 2 (100 - k)/k, percent of the pinion torque on this mesh, (0, 100]
+  int planets = 1;              ///< with FaceLoadModel::sun: the planets meshing with the sun, >= 1
+  iso6336::HelixModification modification = iso6336::HelixModification::none;
+  /// True when any shaft data is given (l > 0, or K' imposed).
+  bool has_shaft() const { return l > 0.0 || !std::isnan(K_prime); }
+};
+
 struct RatingInput {
   RatingMethod method = RatingMethod::iso6336;
   double T_1 = 0;             ///< N m, torque on gear 1 (pinion), > 0
@@ -97,6 +122,7 @@ struct RatingInput {
   double f_sh = std::numeric_limits<double>::quiet_NaN();      ///< misalignment from shaft deflection (NaN: Eq. 43, B* = 1)
   double f_Hbeta = 0;                                          ///< helix slope deviation (F_betax,min)
   double C_a = std::numeric_limits<double>::quiet_NaN();       ///< tip relief (NaN: C_ay by running-in)
+  FaceLoadInput face_load;    ///< shaft and flank line modification for f_sh, F_betax (method C)
   double life_h = 20000;      ///< required life, h, > 0
   double nu_40 = 220;         ///< kinematic viscosity of the oil at 40 C, mm^2/s
   std::array<double, 2> R_z_flank{3.0, 3.0};   ///< um, flank roughness R_z (6 R_a)
@@ -140,6 +166,7 @@ struct PairRating {
   double m_red = NAN, n_E1 = NAN, N = NAN, N_S = NAN;
   iso6336::ResonanceRange range = iso6336::ResonanceRange::subcritical;
   double F_betax = NAN, F_betay = NAN, f_sh = NAN, y_alpha = NAN;
+  double K_prime = NAN, B_star = NAN;  ///< of f_sh by Eq. 43 (NaN: f_sh given, or F_betax given)
   double Z_H = 1, Z_E = 1, Z_epsilon = 1, Z_beta = 1, sigma_H0 = 0;
   double eps_alpha = 0, eps_beta = 0, eps_gamma = 0;
   double T_eq = NAN;  ///< equivalent torque of a spectrum for pitting of gear 1 (N m)
@@ -152,7 +179,8 @@ struct PairRating {
 /// Rates the pair. @throws RatingError naming the input field when the input is invalid
 /// (T_1 <= 0, n_1 <= 0, face width 0, an invalid material, life <= 0, a grade outside its edition
 /// (2013: 1..11, 1995: 0..12),
-/// missing deviations for a computed K_v / K_Hbeta / K_Halpha, a spectrum row with T <= 0 ...).
+/// missing deviations for a computed K_v / K_Hbeta / K_Halpha, a spectrum row with T <= 0, shaft
+/// data that is incomplete or out of range ("face_load") ...).
 PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& input);
 
 /// Checks the load input alone (same errors as rate_gear_pair for the load fields).

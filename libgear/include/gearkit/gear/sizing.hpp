@@ -5,6 +5,7 @@
 // volume of both gears. Lengths in mm.
 #include <gearkit/gear/rating.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace gearkit::gear {
@@ -22,6 +23,14 @@ struct SizingInput {
   double width_ratio_max = 1.0;    ///< largest b / d_1
   double width_module_min = 8.0;   ///< smallest b / m_n (narrower faces carry badly: misalignment, K_Hbeta)
   int count = 5;                   ///< candidates returned
+  /// Required working centre distance, mm (empty: free, V-0 pairs with x1 from `shifts`). Given, a
+  /// candidate's shift sum follows from it (ISO 21771 inv alpha_wt; compute_gear_pair with the
+  /// balanced-sliding split) and must lie in [x_sum_min, x_sum_max]; `shifts` is then unused.
+  std::optional<double> centre_distance;
+  double x_sum_min = -0.5, x_sum_max = 2.0;  ///< shift sum limits with a centre distance (ISO 6336-1 Table 9 range)
+  /// Hunting-tooth pairs only: gcd(z1, z2) = 1 (every pinion tooth meets every wheel tooth). Then
+  /// every z2 within the ratio tolerance is tried, not only the nearest to u z1.
+  bool hunting_tooth = false;
 };
 
 struct SizingCandidate {
@@ -46,8 +55,8 @@ constexpr long long kMaxSizingCombinations = 20000;
 /// ISO 54 series I modules 1 .. 25 mm.
 std::vector<double> iso54_series1();
 
-/// Sizes the pair. @throws RatingError naming "ratio", "modules", "z1", "shifts" or a load field
-/// for invalid input or too many combinations.
+/// Sizes the pair. @throws RatingError naming "ratio", "modules", "z1", "shifts", "centre_distance"
+/// or a load field for invalid input or too many combinations.
 SizingResult size_gear_pair(const SizingInput& input);
 
 }  // namespace gearkit::gear
