@@ -151,7 +151,7 @@ int run_gear_size_command(plugin::CommandContext& context) {
       ("pressure-angle", text()->value_name("ANGLE"), "normal pressure angle (default 20 deg) (bare number: deg)")
       ("width-ratio-max", text()->value_name("B/D1"), "largest face width over pinion diameter (default 1)")
       ("width-module-min", text()->value_name("B/M"), "smallest face width over module (default 8)")
-      ("centre-distance", text()->value_name("LEN"), "required working centre distance, mm: the shift sum follows from it (default free, V-0)")
+      ("centre-distance", text()->value_name("LEN"), "required working centre distance: the shift sum follows from it (default free, V-0) (bare number: mm)")
       ("hunting-tooth", io::po::bool_switch(), "only hunting-tooth pairs, gcd(z1, z2) = 1 (every z2 within the ratio tolerance is tried)")
       ("count", text()->value_name("N"), "candidates shown (default 5)");
   io::add_common_options(desc);
