@@ -317,4 +317,18 @@ TEST(CamDynamicsCommand, DampingRatioNeedsAStiffness) {
   EXPECT_NEAR(j["dynamics"]["damping_N_m_s_per_rad"].get<double>(), 2 * 0.05 * std::sqrt(20000 * 0.006), 1e-9);
 }
 
+// Issue 25: gearkit writes its models through yaml-cpp's emitter. A cam named with quotes, a
+// colon, a hash, a backslash and non-ASCII letters (Nocke "A": 3-4-5 # \ Ü) hands over a
+// `gearkit dyn` model that reads back, with the title as written.
+TEST(CamDynamicsCommand, DynModelOfAnyCamNameReadsBack) {
+  const auto model = write_model("named.yaml", "name: \"Nocke \\\"A\\\": 3-4-5 # \\\\ \xC3\x9C\"\n" + kDoubleDwell +
+                                                   "dynamics: {mass: 7.5 kg, min_contact_force: 5 N}\n");
+  const fs::path dyn = scratch_dir() / "named_dyn.yaml";
+  const auto cam = run(gearkit() + quoted(model) + " --dyn " + quoted(dyn));
+  ASSERT_EQ(cam.status, 0) << cam.errors;
+  const auto r = run("'" + std::string(GEARKIT_EXE) + "' dyn " + quoted(dyn) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.errors;
+  EXPECT_EQ(nlohmann::json::parse(r.output)["title"], "camshaft of Nocke \"A\": 3-4-5 # \\ \xC3\x9C") << r.output.substr(0, 300);
+}
+
 }  // namespace
