@@ -190,8 +190,8 @@ TEST(CsvTables, KinCsvToAFileIsQuiet) {
   const auto to_file = run_gearkit("kin " + model + " --format csv -o " + shell_quote(file));
   ASSERT_EQ(to_file.status, 0) << to_file.err;
   EXPECT_EQ(to_file.err, "");
-  EXPECT_EQ(slurp(file).rfind("input_deg,", 0), 0u) << slurp(file).substr(0, 200);
-  const auto chosen = run_gearkit("kin " + model + " --format csv --table positions");
+  EXPECT_EQ(slurp(file).rfind("theta2 [deg],", 0), 0u) << slurp(file).substr(0, 200);  // the sweep's positions
+  const auto chosen = run_gearkit("kin " + model + " --format csv --table 1");
   ASSERT_EQ(chosen.status, 0) << chosen.err;
   EXPECT_EQ(chosen.err, "");
   const auto terminal = run_gearkit("kin " + model + " --format csv");

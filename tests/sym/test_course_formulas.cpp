@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -104,7 +105,9 @@ TEST(CourseFormulas, PiecedCamLawsPieceByPiece) {
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       EXPECT_TRUE(equivalent(pieces[k].formula.y, (*book)[k])) << gc::name_of(law) << " " << k << ": " << pieces[k].formula.y;
       if (k == 0) continue;
-      const std::string join = fmt::format("{}", pieces[k].u0);  // 0.125, 0.375, 0.5 ...: exact in decimal
+      // Every join is a multiple of 1/8, written as a fraction: GiNaC keeps it exact.
+      const std::string join = fmt::format("{}/8", std::lround(pieces[k].u0 * 8));
+      EXPECT_EQ(pieces[k].u0 * 8, std::round(pieces[k].u0 * 8));
       EXPECT_EQ(pieces[k].u0, pieces[k - 1].u1);
       EXPECT_TRUE(equivalent(at(pieces[k].formula.y, join), at(pieces[k - 1].formula.y, join))) << gc::name_of(law) << k;
       EXPECT_TRUE(equivalent(at(pieces[k].formula.dy, join), at(pieces[k - 1].formula.dy, join))) << gc::name_of(law) << k;
