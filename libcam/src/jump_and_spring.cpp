@@ -125,10 +125,6 @@ SpringSizing size_once(const CamDesign& d, const FollowerTrain& tr, const Sizing
     out.spring_rate = least_mean_force_rate(std::move(pts));
   }
   out.preload = std::max(0.0, supremum(d, [&](double theta) { return need(theta) - out.spring_rate * q_at(theta); }).value);
-  // Where the rate alone meets the need, the supremum is rounding (3.4e-16 N): a preload within
-  // 1e-12 of the forces at play (spring and inertia over the lift, the load) is none.
-  const double scale = (out.spring_rate + tr.mass * rq.omega * rq.omega) * d.program.max_s() + std::abs(tr.load);
-  if (out.preload <= 1e-12 * scale) out.preload = 0;
   return out;
 }
 

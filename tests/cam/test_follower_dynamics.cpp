@@ -126,24 +126,6 @@ FollowerTrain double_dwell_train() {
   return t;
 }
 
-// Issue 25: a sized preload came out as 4.8e-14 N (3.4e-16 N elsewhere) where none is needed.
-// The double-dwell cam undamped with no wanted contact force and 3000 N/m: by hand the follower
-// asks the spring for -m q'' w^2 only where q'' < 0 (decelerating rise, accelerating return), and
-// there q > 0 with sup(-m w^2 q''/q) = m w^2 max(-y''/y)/beta^2 = 7.5 * 100 * 6.2775 / (pi/2)^2 =
-// 1908 N/m in the rise (max of -y''/y = 6.2775 at u = 0.79 for 3-4-5, by dense evaluation; the
-// return, beta = pi, needs a quarter). 3000 N/m > 1908 N/m: k q exceeds the need wherever q > 0,
-// and on the base circle the need is 0, so the least preload is exactly 0.
-TEST(FollowerDynamics, NoPreloadNeededIsZeroNotRounding) {
-  FollowerTrain t = double_dwell_train();
-  t.damping = 0;
-  SizingRequest rq;
-  rq.omega = 10, rq.min_force = 0, rq.spring_rate = 3000;
-  EXPECT_EQ(size_spring(double_dwell(), t, rq).preload, 0.0);
-  // Below the hand limit the spring alone does not hold, and a preload is needed.
-  rq.spring_rate = 1500;
-  EXPECT_GT(size_spring(double_dwell(), t, rq).preload, 1.0);
-}
-
 TEST(FollowerDynamics, DoubleDwellSpringIsNotSatisfactoryByHandCalculation) {
   // Q(u) = m L/beta^2 y'' w^2 + c L/beta y' w + k L y + F_pl with the 3-4-5 polynomial; the least
   // value in the rise (beta = pi/2), minimised here independently by dense evaluation of the

@@ -141,8 +141,7 @@ struct SizingRequest {
 /// given the preload, k = sup((R - F_0)/q) over q > 0. Given neither, the spring with the least
 /// mean force over the turn (least mean contact force, friction, wear and torque): the line k q +
 /// F_0 touching the upper hull of (q, R) over the mean lift. The supremum is found over the turn
-/// (sampled at 3600 angles, then golden-section search), so the spring returned holds. A sized
-/// F_0 within 1e-12 of the forces at play ((k + M omega^2) max s + |F_load|) is rounding: 0.
+/// (sampled at 3600 angles, then golden-section search), so the spring returned holds.
 /// @throws std::invalid_argument if no spring can hold (a given preload below what the follower
 ///         needs at q = 0).
 SpringSizing size_spring(const CamDesign& design, const FollowerTrain& train, const SizingRequest& request);
