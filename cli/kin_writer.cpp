@@ -174,11 +174,13 @@ int KinWriter::finish(const KinAnalysis& a) {
   const std::vector<std::string> warnings = stream_->finish(tail);
   files_.commit();
   if (r_.common.format == io::Format::csv && r_.common.table != "all") {
-    // The CSV holds the positions alone; what else the report has goes to stderr, one line each.
+    // The CSV holds the positions alone; the report's warnings go to stderr, one line each. The
+    // names of the other tables only when the user chose neither a table nor a file: with
+    // --table or --output FILE the positions CSV is what was asked for (issue 25).
     std::vector<std::string> left_out;
     for (std::size_t i = 0; i < tail.tables.size(); ++i) left_out.push_back(io::table_key(tail.tables[i].title, i + 2));
     for (const std::string& w : warnings) err_ << "gearkit: warning: " << w << "\n";
-    if (!left_out.empty())
+    if (!left_out.empty() && r_.common.table.empty() && r_.common.output == "-")
       err_ << fmt::format("gearkit: warning: the CSV holds the positions; the other tables ({}) with --table NAME\n",
                           fmt::join(left_out, ", "));
   }

@@ -146,6 +146,30 @@ std::optional<LawFormula> law_formula(Law law, std::string_view u_text) {
   return std::nullopt;
 }
 
+std::vector<LawPiece> law_pieces(Law law, std::string_view u_text) {
+  if (const auto f = law_formula(law, u_text)) return {{0, 1, *f}};
+  const std::string u = "(" + std::string(u_text) + ")";
+  // Derived by integrating the acceleration pieces above from y(0) = y'(0) = 0 and dividing by
+  // y(1): 1/(pi + 2) for the modified trapezoid, 1/(4 + pi) for the modified sine.
+  const auto mt = [](const std::string& y, const std::string& dy) { return LawFormula{"(" + y + ")/(Pi+2)", "(" + dy + ")/(Pi+2)"}; };
+  const auto ms = [](const std::string& y, const std::string& dy) { return LawFormula{"(" + y + ")/(4+Pi)", "(" + dy + ")/(4+Pi)"}; };
+  switch (law) {
+    case Law::parabolic:
+      return {{0, 0.5, {"2*" + u + "^2", "4*" + u}}, {0.5, 1, {"1-2*(1-" + u + ")^2", "4*(1-" + u + ")"}}};
+    case Law::modified_trapezoid:
+      return {{0, 0.125, mt("2*" + u + "-sin(4*Pi*" + u + ")/(2*Pi)", "2-2*cos(4*Pi*" + u + ")")},
+              {0.125, 0.375, mt("4*Pi*" + u + "^2+(2-Pi)*" + u + "+Pi/16-1/(2*Pi)", "8*Pi*" + u + "+2-Pi")},
+              {0.375, 0.625, mt("(2+2*Pi)*" + u + "+sin(4*Pi*" + u + ")/(2*Pi)-Pi/2", "2+2*Pi+2*cos(4*Pi*" + u + ")")},
+              {0.625, 0.875, mt("-4*Pi*" + u + "^2+(7*Pi+2)*" + u + "-2*Pi-Pi/16+1/(2*Pi)", "7*Pi+2-8*Pi*" + u)},
+              {0.875, 1, mt("Pi+2*" + u + "-sin(4*Pi*" + u + ")/(2*Pi)", "2-2*cos(4*Pi*" + u + ")")}};
+    case Law::modified_sine:
+      return {{0, 0.125, ms("Pi*" + u + "-sin(4*Pi*" + u + ")/4", "Pi-Pi*cos(4*Pi*" + u + ")")},
+              {0.125, 0.875, ms("2+Pi*" + u + "-9/4*cos(4*Pi*" + u + "/3-Pi/6)", "Pi+3*Pi*sin(4*Pi*" + u + "/3-Pi/6)")},
+              {0.875, 1, ms("4+Pi*" + u + "-sin(4*Pi*" + u + ")/4", "Pi-Pi*cos(4*Pi*" + u + ")")}};
+    default: return {};
+  }
+}
+
 std::string_view name_of(Law law) {
   for (const NamedLaw& n : kNames)
     if (n.law == law) return n.name;

@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace gearkit::gear {
 
@@ -61,7 +63,13 @@ void generating_mesh(const ToothFormSpec& s, const Section& c, Cutter& k) {
   // Zero backlash: cutter tooth on its working circle = ring space on the ring's (ISO 21771
   // internal pair with x_0 and the ring's x): inv alpha_w0 = inv alpha_t + (e_t2 - s_t0) / (2 (r_2 - r_0)).
   const double e_t2 = 2.0 * c.r * c.e_over_d;
-  k.cut.alpha_w0 = inverse_involute(involute(c.alpha_t) + (e_t2 - s_t0) / (2.0 * (c.r - k.r_0)));
+  const double inv_alpha_w0 = involute(c.alpha_t) + (e_t2 - s_t0) / (2.0 * (c.r - k.r_0));
+  if (!(inv_alpha_w0 > 0.0))
+    throw std::invalid_argument(fmt::format(
+        "ring cutter: the z_0 = {} cutter's teeth (s_t0 = {:.4f} mm) are too thick for the ring's spaces (e_t2 = {:.4f} mm) "
+        "at a tooth difference of {}: no generating mesh without backlash (inv alpha_w0 = {:.4g}); use fewer cutter teeth",
+        k.cut.z_0, s_t0, e_t2, k.z_ring - k.cut.z_0, inv_alpha_w0));
+  k.cut.alpha_w0 = inverse_involute(inv_alpha_w0);
   k.cut.a_0 = (c.r - k.r_0) * std::cos(c.alpha_t) / std::cos(k.cut.alpha_w0);
   k.r_w2 = c.r * std::cos(c.alpha_t) / std::cos(k.cut.alpha_w0);
   const double r_f2 = c.r + (s.rack.h_fP - c.x_e) * s.m_n;
@@ -86,14 +94,18 @@ double largest_tip_rounding(const Cutter& k) {
 
 void tip_rounding(Cutter& k, double rho_asked) {
   const double r_a0 = 0.5 * k.cut.d_a0;
-  if (!(r_a0 > k.r_b0)) throw std::invalid_argument("ring cutter: its tip circle lies inside its base circle (more cutter teeth or a larger x_0)");
+  if (!(r_a0 > k.r_b0))
+    throw std::invalid_argument(fmt::format("ring cutter: the z_0 = {} cutter's tip circle (d_a0 = {:.4f} mm) lies inside its "
+                                            "base circle (d_b0 = {:.4f} mm): more cutter teeth or a larger x_0",
+                                            k.cut.z_0, k.cut.d_a0, 2.0 * k.r_b0));
   const double rho_max = largest_tip_rounding(k);
   // Default: the rack's rho_fP m_n, or 3/4 of the full-radius rounding where that does not fit
   // (a 20 deg cutter with 1.25 m_n addendum has a tip about 0.4 m_n thick).
   k.cut.rho_a0 = rho_asked >= 0.0 ? rho_asked : std::min(k.cut.rho_a0, 0.75 * rho_max);
   const double rho = k.cut.rho_a0;
   if (rho > rho_max) {
-    throw std::invalid_argument(fmt::format("ring cutter: a tip rounding of {:.4g} mm does not fit the cutter tooth (at most {:.4g} mm)", rho, rho_max));
+    throw std::invalid_argument(fmt::format("ring cutter: a tip rounding of {:.4g} mm does not fit the z_0 = {} cutter's tooth "
+                                            "(at most {:.4g} mm)", rho, k.cut.z_0, rho_max));
   }
   const double R_c = r_a0 - rho;
   const double eta_c = rounding_centre_eta(k, rho);
@@ -107,12 +119,12 @@ void tip_rounding(Cutter& k, double rho_asked) {
   k.tau_flank = k.psi0(R_P) - alpha_P + kPi / 2.0;
 }
 
-Cutter make_cutter(const ToothFormSpec& s, const Section& c) {
-  if (s.z >= 0) throw std::invalid_argument("ring cutting: expected a ring (z < 0)");
+Cutter cutter_of(const ToothFormSpec& s, const Section& c, int z_0) {
   Cutter k;
   k.z_ring = -s.z;
-  k.cut.z_0 = s.cutter.z_0 > 0 ? s.cutter.z_0 : default_cutter_teeth(s.z, c.m_t);
-  if (k.cut.z_0 < 5 || k.cut.z_0 >= k.z_ring) throw std::invalid_argument("ring cutter: expected 5 <= z_0 < |z| teeth");
+  k.cut.z_0 = z_0;
+  if (k.cut.z_0 < 5 || k.cut.z_0 >= k.z_ring)
+    throw std::invalid_argument(fmt::format("ring cutter: expected 5 <= z_0 < |z| = {} teeth, found {}", k.z_ring, z_0));
   k.cut.x_0 = s.cutter.x_0;
   k.cut.rho_a0 = s.rack.rho_fP * s.m_n;
   generating_mesh(s, c, k);
@@ -143,20 +155,33 @@ double normal_offset(const Cutter& k, double delta, double target) {
   return std::remainder(std::atan2(n.x, n.y) - target, 2.0 * kPi);
 }
 
-// The cutter turn delta at which the rounding's normal points along `target`: the sign change of
-// normal_offset nearest to delta = 0 over +-2 ring pitches.
-double delta_for_normal(const Cutter& k, double target) {
-  const double span = 4.0 * kPi / k.z_ring;
-  constexpr int kScan = 2000;
+// The sign change of normal_offset nearest to delta = 0 over +-span, scanned in `steps`; NaN if none.
+double nearest_normal(const Cutter& k, double target, double span, int steps) {
   double best = NAN;
-  for (int i = 0; i < kScan; ++i) {
-    const double a = -span + 2.0 * span * i / kScan, b = a + 2.0 * span / kScan;
+  for (int i = 0; i < steps; ++i) {
+    const double a = -span + 2.0 * span * i / steps, b = a + 2.0 * span / steps;
     const double fa = normal_offset(k, a, target), fb = normal_offset(k, b, target);
     if ((fa > 0.0) == (fb > 0.0) || std::fabs(fa - fb) > 1.0) continue;
     const double root = detail::bisect([&](double d) { return normal_offset(k, d, target); }, a, b);
     if (std::isnan(best) || std::fabs(root) < std::fabs(best)) best = root;
   }
-  if (std::isnan(best)) throw std::invalid_argument("ring cutter: its tip rounding does not reach the ring's flank");
+  return best;
+}
+
+// The cutter turn delta at which the rounding's normal points along `target`: the sign change
+// nearest to delta = 0, over +-2 ring pitches, else over half a turn of the cutter either way
+// (a cutter of nearly the ring's size rolls slowly: |z| - z_0 = 10 at alpha_w0 = 6 deg needs
+// about 5 ring pitches), at the same density.
+double delta_for_normal(const Cutter& k, double target) {
+  const double near = 4.0 * kPi / k.z_ring;
+  constexpr int kScan = 2000;
+  double best = nearest_normal(k, target, near, kScan);
+  const double wide = std::max(near, kPi * k.cut.z_0 / k.z_ring);
+  if (std::isnan(best) && wide > near) best = nearest_normal(k, target, wide, static_cast<int>(std::ceil(kScan * wide / near)));
+  if (std::isnan(best))
+    throw std::invalid_argument(fmt::format("ring cutter: the z_0 = {} cutter's tip rounding never touches the ring's flank "
+                                            "within half a turn of the generating mesh (alpha_w0 = {:.3f} deg); use fewer "
+                                            "cutter teeth", k.cut.z_0, k.cut.alpha_w0 * 180.0 / kPi));
   return best;
 }
 
@@ -182,6 +207,40 @@ double tip_interference(const Cutter& k, const Section& c, double r_form) {
   return worst;
 }
 
+// The interference numbers of ring_cutting for cutter k.
+RingCutting cutting_of(const Cutter& k, const Section& c) {
+  RingCutting out = k.cut;
+  const double reach = std::sqrt(std::max(0.0, c.r_a * c.r_a - c.r_b * c.r_b));
+  out.involute_interference = std::max(0.0, out.a_0 * std::sin(out.alpha_w0) - reach);
+  const double d_form = delta_for_normal(k, k.tau_flank);
+  out.tip_interference = tip_interference(k, c, detail::to_polar(fillet_point(k, d_form)).r);
+  return out;
+}
+
+// The default cutter: from default_cutter_teeth downwards, the first that cuts the ring cleanly
+// (no involute interference, tip interference below 1e-7 mm, the finest outline tolerance), so
+// the report never warns about a cutter the user did not choose; if none does, the largest
+// that cuts at all (the report warns), else the nominal cutter's reason.
+Cutter make_cutter(const ToothFormSpec& s, const Section& c) {
+  if (s.z >= 0) throw std::invalid_argument("ring cutting: expected a ring (z < 0)");
+  if (s.cutter.z_0 > 0) return cutter_of(s, c, s.cutter.z_0);
+  const int nominal = default_cutter_teeth(s.z, c.m_t);
+  std::optional<Cutter> usable;
+  std::string reason;
+  for (int z_0 = nominal; z_0 >= 5; --z_0) {
+    try {
+      const Cutter k = cutter_of(s, c, z_0);
+      const RingCutting r = cutting_of(k, c);
+      if (r.involute_interference == 0.0 && r.tip_interference <= 1e-7) return k;
+      if (!usable) usable = k;
+    } catch (const std::invalid_argument& e) {
+      if (reason.empty()) reason = e.what();
+    }
+  }
+  if (usable) return *usable;
+  throw std::invalid_argument(fmt::format("{} (the default cutter; none of 5 to {} teeth cuts this ring)", reason, nominal));
+}
+
 }  // namespace
 
 int default_cutter_teeth(int z_ring, double m_t) {
@@ -202,14 +261,7 @@ std::vector<detail::Polar> detail::ring_flank(const ToothFormSpec& s, const Sect
 
 RingCutting ring_cutting(const ToothFormSpec& s) {
   const Section c = detail::section_of(s);
-  const Cutter k = make_cutter(s, c);
-  RingCutting out = k.cut;
-  const double r_a2 = c.r_a, r_b2 = c.r_b;
-  const double reach = std::sqrt(std::max(0.0, r_a2 * r_a2 - r_b2 * r_b2));
-  out.involute_interference = std::max(0.0, out.a_0 * std::sin(out.alpha_w0) - reach);
-  const double d_form = delta_for_normal(k, k.tau_flank);
-  out.tip_interference = tip_interference(k, c, detail::to_polar(fillet_point(k, d_form)).r);
-  return out;
+  return cutting_of(make_cutter(s, c), c);
 }
 
 }  // namespace gearkit::gear

@@ -1,6 +1,7 @@
 #include <gearkit/synth/mechanism_writer.hpp>
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <numbers>
@@ -19,7 +20,6 @@ std::string number(double v, double scale) {
 }
 std::string mm(double metres) { return number(metres, 1000.0); }
 std::string degrees(double radians) { return number(radians, 1.0 / deg) + " deg"; }
-std::string pair_mm(const Vec2& v) { return "[" + mm(v.x()) + ", " + mm(v.y()) + "]"; }
 
 const std::string& identifier(const std::string& name) {
   bool ok = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
@@ -28,22 +28,51 @@ const std::string& identifier(const std::string& name) {
   return name;
 }
 
-std::string point_map(const std::vector<SketchPoint>& points) {
-  std::string s;
-  for (const SketchPoint& p : points) s += (s.empty() ? "" : ", ") + identifier(p.name) + ": " + pair_mm(p.at);
-  return "{" + s + "}";
+// The emitter quotes what needs quoting (a title with ':', '#', quotes or a line break) and
+// leaves names, numbers and "12.5 deg" plain; maps of points and the joint, driver and output
+// entries stay in flow style, one per line, as a person would write the file.
+void pair_mm(YAML::Emitter& y, const Vec2& v) { y << YAML::Flow << YAML::BeginSeq << mm(v.x()) << mm(v.y()) << YAML::EndSeq; }
+
+void point_map(YAML::Emitter& y, const std::vector<SketchPoint>& points) {
+  y << YAML::Flow << YAML::BeginMap;
+  for (const SketchPoint& p : points) {
+    y << YAML::Key << identifier(p.name) << YAML::Value;
+    pair_mm(y, p.at);
+  }
+  y << YAML::EndMap;
 }
 
-std::string joint_line(const SketchJoint& j) {
+void joint_entry(YAML::Emitter& y, const SketchJoint& j) {
+  y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << identifier(j.name);
   if (j.prismatic)
-    return fmt::format("  - {{name: {}, type: prismatic, slider: {}, guide: {}, axis: {}}}\n", identifier(j.name),
-                       j.first, j.second, degrees(j.axis));
-  return fmt::format("  - {{name: {}, type: revolute, at: [{}, {}]}}\n", identifier(j.name), j.first, j.second);
+    y << YAML::Key << "type" << YAML::Value << "prismatic" << YAML::Key << "slider" << YAML::Value << j.first
+      << YAML::Key << "guide" << YAML::Value << j.second << YAML::Key << "axis" << YAML::Value << degrees(j.axis);
+  else
+    y << YAML::Key << "type" << YAML::Value << "revolute" << YAML::Key << "at" << YAML::Value << YAML::Flow
+      << YAML::BeginSeq << j.first << j.second << YAML::EndSeq;
+  y << YAML::EndMap;
 }
 
-std::string output_line(const SketchOutput& o) {
+void output_entry(YAML::Emitter& y, const SketchOutput& o) {
   const char* key = o.type == "angle" ? "link" : o.type == "slider" ? "joint" : "point";
-  return fmt::format("  - {{name: {}, type: {}, {}: {}}}\n", identifier(o.name), o.type, key, o.target);
+  y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << identifier(o.name) << YAML::Key << "type"
+    << YAML::Value << o.type << YAML::Key << key << YAML::Value << o.target << YAML::EndMap;
+}
+
+void driver_entry(YAML::Emitter& y, const SketchDriver& d) {
+  y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << identifier(d.name) << YAML::Key << "type"
+    << YAML::Value << "angle" << YAML::Key << "link" << YAML::Value << identifier(d.link) << YAML::Key << "range"
+    << YAML::Value << YAML::Flow << YAML::BeginSeq << degrees(d.start) << degrees(d.end) << degrees(d.step)
+    << YAML::EndSeq << YAML::EndMap;
+}
+
+// One '#' line per comment (the emitter starts each line of a comment holding a line break with
+// '#' too). It ends a comment with its line: a Newline after the last would leave a blank line.
+void comment_lines(YAML::Emitter& y, const std::vector<std::string>& comments) {
+  for (std::size_t i = 0; i < comments.size(); ++i) {
+    if (i > 0) y << YAML::Newline;
+    y << YAML::Comment(comments[i]);
+  }
 }
 
 // Drawn step of a sweep: 1 deg, finer so that short travels still get 60 samples.
@@ -52,27 +81,36 @@ double sweep_step(double travel) { return std::min(1.0 * deg, std::max(travel, 1
 }  // namespace
 
 std::string to_mechanism_yaml(const MechanismSketch& s) {
-  std::string y;
-  for (const std::string& c : s.comments) y += "# " + c + "\n";
-  y += "mechanism: " + (s.title.empty() ? std::string("synthesised linkage") : s.title) + "\n";
-  y += "ground:\n";
-  for (const SketchPoint& p : s.ground) y += "  " + identifier(p.name) + ": " + pair_mm(p.at) + "\n";
-  y += "links:\n";
-  for (const SketchLink& l : s.links) {
-    y += "  " + identifier(l.name) + ":\n";
-    y += "    points: " + point_map(l.points) + "\n";
-    y += "    angle: " + degrees(l.angle) + "\n";
-    y += "    position: " + pair_mm(l.position) + "\n";
+  YAML::Emitter y;
+  comment_lines(y, s.comments);
+  y << YAML::BeginMap << YAML::Key << "mechanism" << YAML::Value
+    << (s.title.empty() ? std::string("synthesised linkage") : s.title);
+  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
+  for (const SketchPoint& p : s.ground) {
+    y << YAML::Key << identifier(p.name) << YAML::Value;
+    pair_mm(y, p.at);
   }
-  y += "joints:\n";
-  for (const SketchJoint& j : s.joints) y += joint_line(j);
-  const SketchDriver& d = s.driver;
-  y += "drivers:\n";
-  y += fmt::format("  - {{name: {}, type: angle, link: {}, range: [{}, {}, {}]}}\n", identifier(d.name),
-                   identifier(d.link), degrees(d.start), degrees(d.end), degrees(d.step));
-  if (!s.outputs.empty()) y += "outputs:\n";
-  for (const SketchOutput& o : s.outputs) y += output_line(o);
-  return y;
+  y << YAML::EndMap << YAML::Key << "links" << YAML::Value << YAML::BeginMap;
+  for (const SketchLink& l : s.links) {
+    y << YAML::Key << identifier(l.name) << YAML::Value << YAML::BeginMap << YAML::Key << "points" << YAML::Value;
+    point_map(y, l.points);
+    y << YAML::Key << "angle" << YAML::Value << degrees(l.angle) << YAML::Key << "position" << YAML::Value;
+    pair_mm(y, l.position);
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap << YAML::Key << "joints" << YAML::Value << YAML::BeginSeq;
+  for (const SketchJoint& j : s.joints) joint_entry(y, j);
+  y << YAML::EndSeq << YAML::Key << "drivers" << YAML::Value << YAML::BeginSeq;
+  driver_entry(y, s.driver);
+  y << YAML::EndSeq;
+  if (!s.outputs.empty()) {
+    y << YAML::Key << "outputs" << YAML::Value << YAML::BeginSeq;
+    for (const SketchOutput& o : s.outputs) output_entry(y, o);
+    y << YAML::EndSeq;
+  }
+  y << YAML::EndMap;
+  if (!y.good()) throw std::logic_error("mechanism sketch: " + y.GetLastError());
+  return std::string(y.c_str()) + "\n";
 }
 
 MechanismSketch four_bar_sketch(const FourBar& f, double theta2_start, double travel, int direction,

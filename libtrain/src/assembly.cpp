@@ -158,7 +158,7 @@ AssemblyCheck spacing_check(const TrainModel& model, MemberId p, const std::stri
   if (has_planet_planet_mesh(model, p))
     return {subject, "equal spacing", false, false, "not checked: the planet meshes with another planet"};
   if (central.empty())  // nothing to space the planets against (and no central[0] to read)
-    return {subject, "equal spacing", false, false, "not checked: the planet meshes no central gear"};
+    return {subject, "equal spacing", false, false, "not checked: the planet meshes no central gear", true};
   if (central.size() == 1)
     return {subject, "equal spacing", true, true,
             fmt::format("{} planets around one central gear: any spacing assembles", n)};

@@ -5,6 +5,7 @@
 #include "cam_text.hpp"
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,24 +72,31 @@ io::Plot dynamics_plot(const CamModel& model, const CamDynamics& dyn) {
 std::string dyn_model(const CamModel& model, const CamDynamics& dyn, const std::string& file) {
   // The camshaft is the load shaft; its torque over the turn, kinetostatic at the design speed
   // (follower inertia included), is the resisting torque; the motor gives the mean torque
-  // (scale: balance makes the cycle steady to the tolerance gearkit dyn asks).
+  // (scale: balance makes the cycle steady to the tolerance gearkit dyn asks). Written by the
+  // emitter, so that any cam name or file name reads back (issue 25).
   const double rpm = dyn.omega * 30 / std::numbers::pi;
-  std::string out = fmt::format(
-      "# Written by gearkit cam from {}: the camshaft's torque over one turn at {:.9g} rpm\n"
-      "# (kinetostatic: follower inertia, spring, damping and friction), for `gearkit dyn` (docs/dyn.md).\n"
-      "title: \"camshaft of {}\"\n"
-      "motor:\n  speed: {:.9g} rpm\n"
-      "load:\n  name: camshaft\n  resisting:\n    table:\n",
-      file, rpm, model.name.empty() ? file : model.name, rpm);
+  YAML::Emitter y;
+  y << YAML::Comment(fmt::format("Written by gearkit cam from {}: the camshaft's torque over one turn at {:.9g} rpm", file, rpm))
+    << YAML::Newline
+    << YAML::Comment("(kinetostatic: follower inertia, spring, damping and friction), for `gearkit dyn` (docs/dyn.md).");
+  y << YAML::BeginMap << YAML::Key << "title" << YAML::Value << YAML::DoubleQuoted
+    << "camshaft of " + (model.name.empty() ? file : model.name);
+  y << YAML::Key << "motor" << YAML::Value << YAML::BeginMap << YAML::Key << "speed" << YAML::Value
+    << fmt::format("{:.9g} rpm", rpm) << YAML::EndMap;
+  y << YAML::Key << "load" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << "camshaft" << YAML::Key
+    << "resisting" << YAML::Value << YAML::BeginMap << YAML::Key << "table" << YAML::Value << YAML::BeginSeq;
   const double start = dyn.states.front().theta;
   for (std::size_t i = 0; i <= dyn.states.size(); ++i) {
     const gc::DynamicState& s = dyn.states[i % dyn.states.size()];
     const double angle = i == dyn.states.size() ? 360.0 : deg(s.theta - start);
-    out += fmt::format("      - [{:.9g} deg, {:.12g}]\n", angle, s.torque);
+    y << YAML::Flow << YAML::BeginSeq << fmt::format("{:.9g} deg", angle) << fmt::format("{:.12g}", s.torque) << YAML::EndSeq;
   }
-  out += fmt::format("flywheel:\n  fluctuation: {:.9g}\n  drive: {{constant: 1 N*m, scale: balance}}\n",
-                     model.dynamics->fluctuation);
-  return out;
+  y << YAML::EndSeq << YAML::EndMap << YAML::EndMap;
+  y << YAML::Key << "flywheel" << YAML::Value << YAML::BeginMap << YAML::Key << "fluctuation" << YAML::Value
+    << fmt::format("{:.9g}", model.dynamics->fluctuation) << YAML::Key << "drive" << YAML::Value << YAML::Flow
+    << YAML::BeginMap << YAML::Key << "constant" << YAML::Value << "1 N*m" << YAML::Key << "scale" << YAML::Value
+    << "balance" << YAML::EndMap << YAML::EndMap << YAML::EndMap;
+  return std::string(y.c_str()) + "\n";
 }
 
 }  // namespace gearkit::plugins::cam

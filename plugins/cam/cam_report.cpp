@@ -397,31 +397,43 @@ std::string angle_text(double rad) {
 }
 
 // s(theta) and ds/dtheta of every segment as formulas in theta [rad] (course notes' form,
-// OTM 2015 problem 2 a): a rise or fall s0 +- L y(u), u = (theta - theta0)/beta.
+// OTM 2015 problem 2 a): a rise or fall s0 +- L y(u), u = (theta - theta0)/beta; a law pieced
+// together (parabolic, modified trapezoid, modified sine) one row per piece.
 void formulas_section(const CamModel& model, io::Report& rep) {
   const gc::MotionProgram& program = model.design.program;
   const FollowerUnits units(model);
   io::Table t{"Motion formulas (theta in rad)", {"segment", "from [deg]", "to [deg]", fmt::format("{}(theta) [{}]", units.s_name, units.d_unit),
                                                  fmt::format("d{}/dtheta [{}/rad]", units.s_name, units.d_unit)}, {}};
   nlohmann::json all = nlohmann::json::array();
-  for (const gc::Segment& seg : program.segments()) {
-    const double s0 = program.at(seg.start).s;
-    std::string s_text = fmt::format("{:.15g}", s0), ds_text = "0";
+  // `piece`: "2/3" for the second of three pieces of a law, empty for a whole segment.
+  const auto add = [&](const gc::Segment& seg, const std::string& piece, double from, double to, const std::string& s_text,
+                       const std::string& ds_text) {
     const bool moves = seg.kind == gc::SegmentKind::rise || seg.kind == gc::SegmentKind::fall;
-    if (seg.kind != gc::SegmentKind::dwell && !moves) continue;  // tables and polynomials: no closed law here
-    if (moves) {
-      const std::string beta = angle_text(seg.end - seg.start), theta0 = angle_text(seg.start);
-      const std::string u = (theta0 == "0" ? std::string("theta") : "theta-" + theta0) + ")/(" + beta;
-      const auto f = gc::law_formula(seg.law, "(" + u + ")");
-      if (!f) continue;
-      const char* sign = seg.kind == gc::SegmentKind::rise ? "+" : "-";
-      s_text = fmt::format("{}{}{:.15g}*({})", s0 == 0.0 ? "" : fmt::format("{:.15g}", s0), s0 == 0.0 && *sign == '+' ? "" : sign, seg.lift, f->y);
-      ds_text = fmt::format("{}{:.15g}/({})*({})", *sign == '-' ? "-" : "", seg.lift, beta, f->dy);
-    }
-    t.add_row({kind_name(seg), io::fixed(deg(seg.start), 2), io::fixed(deg(seg.end), 2), s_text, ds_text});
-    all.push_back({{"kind", kind_name(seg)}, {"from_deg", deg(seg.start)}, {"to_deg", deg(seg.end)},
+    t.add_row({piece.empty() ? kind_name(seg) : kind_name(seg) + " " + piece, io::fixed(deg(from), 2), io::fixed(deg(to), 2),
+               s_text, ds_text});
+    all.push_back({{"kind", kind_name(seg)}, {"from_deg", deg(from)}, {"to_deg", deg(to)},
                    {"law", moves ? std::string(gc::name_of(seg.law)) : "dwell"}, {"s", s_text}, {"ds_dtheta", ds_text},
                    {"unit", units.d_unit}});
+    if (!piece.empty()) all.back()["piece"] = piece;
+  };
+  for (const gc::Segment& seg : program.segments()) {
+    const double s0 = program.at(seg.start).s;
+    if (seg.kind == gc::SegmentKind::dwell) add(seg, "", seg.start, seg.end, fmt::format("{:.15g}", s0), "0");
+    if (seg.kind != gc::SegmentKind::rise && seg.kind != gc::SegmentKind::fall) continue;  // tables, polynomials: no closed law here
+    const std::string beta = angle_text(seg.end - seg.start), theta0 = angle_text(seg.start);
+    const std::string u = (theta0 == "0" ? std::string("theta") : "theta-" + theta0) + ")/(" + beta;
+    const std::vector<gc::LawPiece> pieces = gc::law_pieces(seg.law, "(" + u + ")");
+    const char* sign = seg.kind == gc::SegmentKind::rise ? "+" : "-";
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      const gc::LawFormula& f = pieces[k].formula;
+      const std::string s_text = fmt::format("{}{}{:.15g}*({})", s0 == 0.0 ? "" : fmt::format("{:.15g}", s0),
+                                             s0 == 0.0 && *sign == '+' ? "" : sign, seg.lift, f.y);
+      const std::string ds_text = fmt::format("{}{:.15g}/({})*({})", *sign == '-' ? "-" : "", seg.lift, beta, f.dy);
+      const double span = seg.end - seg.start;  // the ends exactly, not seg.start + 1 * span
+      const double from = k == 0 ? seg.start : seg.start + pieces[k].u0 * span;
+      const double to = k + 1 == pieces.size() ? seg.end : seg.start + pieces[k].u1 * span;
+      add(seg, pieces.size() == 1 ? "" : fmt::format("{}/{}", k + 1, pieces.size()), from, to, s_text, ds_text);
+    }
   }
   rep.tables.push_back(std::move(t));
   rep.json["motion_formulas"] = all;

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -24,6 +25,14 @@ std::string mm(double v) { return std::isfinite(v) ? io::fixed(v, 3) : std::stri
 std::string helix(double beta) {
   if (beta == 0.0) return "0° (spur)";
   return fmt::format("{}° {}", io::fixed(std::fabs(beta) * kDeg, 3), beta > 0.0 ? "right" : "left");
+}
+
+// Whether span() and pins() show a max / min pair (an inspection with an acceptance band).
+bool has_span_limits(const gg::GearResult& g, const gg::GearInspection* gi) {
+  return g.k_span > 0 && std::isfinite(g.W_k) && gi && gi->acceptance_band && std::isfinite(gi->W_k_max);
+}
+bool has_pin_limits(const gg::GearResult& g, const gg::GearInspection* gi) {
+  return std::isfinite(g.M_d) && gi && gi->acceptance_band && std::isfinite(gi->M_d_max);
 }
 
 std::string span(const gg::GearResult& g, const gg::GearInspection* gi) {
@@ -90,8 +99,12 @@ io::TextTable gear_data_table(const gg::GearPairInput& in, const gg::GearPairRes
   add_row(t, which, "base diameter", "d_b", [&](int i) { return mm(g(i).d_b); });
   add_row(t, which, "tip diameter", "d_a", [&](int i) { return mm(g(i).d_a); });
   add_row(t, which, "root diameter", "d_f", [&](int i) { return mm(g(i).d_f); });
-  add_row(t, which, "span max / min", "W_k", [&](int i) { return span(g(i), gi(i)); });
-  add_row(t, which, "over (ring: between) pins max / min", "M_d", [&](int i) { return pins(g(i), gi(i)); });
+  // "max / min" only where a cell shows the two limits; without inspection it is one nominal value.
+  const bool span_limits = std::any_of(which.begin(), which.end(), [&](int i) { return has_span_limits(g(i), gi(i)); });
+  const bool pin_limits = std::any_of(which.begin(), which.end(), [&](int i) { return has_pin_limits(g(i), gi(i)); });
+  add_row(t, which, span_limits ? "span max / min" : "span", "W_k", [&](int i) { return span(g(i), gi(i)); });
+  add_row(t, which, pin_limits ? "over (ring: between) pins max / min" : "over (ring: between) pins", "M_d",
+          [&](int i) { return pins(g(i), gi(i)); });
   if (insp) inspection_rows(t, which, *insp);
   add_row(t, which, "mating gear: teeth", "z", [&](int i) { return std::to_string(g(1 - i).z); });
   add_row(t, which, "centre distance", "a", [&](int) { return centre_distance(r, insp); });
@@ -171,8 +184,11 @@ gg::ShaperCutter checked_cutter(const gg::GearPairInput& in, const gg::GearPairR
     const gg::RingCutting c = gg::ring_cutting(spec);
     if (cutting) *cutting = c;
   } catch (const std::invalid_argument& e) {
+    // The tip radius is to blame only when the user gave one and it does not fit; everything else
+    // is the cutter's size (the message names the z_0 it tried, the user's or the default).
     const std::string what = e.what();
-    io::fail_option(what.find("rounding") != std::string::npos ? "--cutter-tip-radius" : "--cutter-teeth", what);
+    const bool rounding = o.cutter.rho_a0 >= 0.0 && what.find("does not fit") != std::string::npos;
+    io::fail_option(rounding ? "--cutter-tip-radius" : "--cutter-teeth", what);
   }
   return o.cutter;
 }

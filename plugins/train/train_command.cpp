@@ -381,6 +381,8 @@ void add_assembly(io::Report& report, const gt::TrainModel& model, double tolera
     if (check.checked && !check.satisfied)
       report.warnings.push_back(fmt::format("cannot be assembled: {}, {}: {}", check.subject, check.condition,
                                             check.detail));
+    if (!check.checked && check.suspect)
+      report.warnings.push_back(fmt::format("assembly of {} ({}) {}", check.subject, check.condition, check.detail));
   }
   report.tables.push_back(std::move(table));
   report.json["assembly"] = j;

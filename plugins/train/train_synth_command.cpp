@@ -91,7 +91,7 @@ void add_common_synth_options(po::options_description& desc) {
                         ->value_name("T"),
        "accepted relative ratio error (default 1e-6)")
       ("z-min", po::value<long long>()->value_name("Z"), "fewest teeth (default 12)")
-      ("z-max", po::value<long long>()->value_name("Z"), "most teeth (default 150)")
+      ("z-max", po::value<long long>()->value_name("Z"), "most teeth (default 150, or the --z-min value if that is larger)")
       ("max-results", po::value<long long>()->value_name("N"), "candidates listed (default 20)");
 }
 

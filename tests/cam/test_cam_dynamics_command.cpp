@@ -317,4 +317,46 @@ TEST(CamDynamicsCommand, DampingRatioNeedsAStiffness) {
   EXPECT_NEAR(j["dynamics"]["damping_N_m_s_per_rad"].get<double>(), 2 * 0.05 * std::sqrt(20000 * 0.006), 1e-9);
 }
 
+// Issue 25: a sized preload was printed as 3.2e-14 N where none is needed. The double-dwell cam
+// undamped with no wanted contact force and 3000 N/m: by hand the follower asks the spring for
+// -m q'' w^2 only where q'' < 0 (decelerating rise, accelerating return), and there q > 0 with
+// sup(-m w^2 q''/q) = m w^2 max(-y''/y)/beta^2 = 7.5 * 100 * 6.2775 / (pi/2)^2 = 1908 N/m in the
+// rise (max of -y''/y = 6.2775 at u = 0.79 for 3-4-5, by dense evaluation; the return, beta = pi,
+// needs a quarter). 3000 N/m > 1908 N/m: k q exceeds the need wherever q > 0, and on the base
+// circle the need is 0, so the least preload is exactly 0 (and the follower stays on the cam).
+TEST(CamDynamicsCommand, NoPreloadNeededIsZeroNotRounding) {
+  const auto model = write_model("nopreload.yaml", kDoubleDwell + "dynamics: {mass: 7.5 kg, min_contact_force: 0 N, "
+                                                                  "spring_rate: 3000 N/m}\n");
+  const auto j = run_json(quoted(model));
+  EXPECT_EQ(j["dynamics"]["preload_N"].get<double>(), 0.0) << j["dynamics"];
+  EXPECT_TRUE(j["dynamics"]["preload_sized"].get<bool>());
+  EXPECT_FALSE(has_warning(j, "leaves the cam"));
+  const auto text = run(gearkit() + quoted(model));
+  ASSERT_EQ(text.status, 0) << text.errors;
+  const auto row = text.output.find("preload [N]");
+  ASSERT_NE(row, std::string::npos) << text.output;
+  std::istringstream cells(text.output.substr(row + 11, text.output.find('\n', row) - row - 11));
+  std::string value;
+  cells >> value;
+  EXPECT_EQ(value, "0") << text.output.substr(row, 80);
+  // Below the hand limit the rate alone does not hold, and a preload is needed.
+  const auto soft = write_model("softpreload.yaml", kDoubleDwell + "dynamics: {mass: 7.5 kg, min_contact_force: 0 N, "
+                                                                   "spring_rate: 1500 N/m}\n");
+  EXPECT_GT(run_json(quoted(soft))["dynamics"]["preload_N"].get<double>(), 1.0);
+}
+
+// Issue 25: gearkit writes its models through yaml-cpp's emitter. A cam named with quotes, a
+// colon, a hash, a backslash and non-ASCII letters (Nocke "A": 3-4-5 # \ Ü) hands over a
+// `gearkit dyn` model that reads back, with the title as written.
+TEST(CamDynamicsCommand, DynModelOfAnyCamNameReadsBack) {
+  const auto model = write_model("named.yaml", "name: \"Nocke \\\"A\\\": 3-4-5 # \\\\ \xC3\x9C\"\n" + kDoubleDwell +
+                                                   "dynamics: {mass: 7.5 kg, min_contact_force: 5 N}\n");
+  const fs::path dyn = scratch_dir() / "named_dyn.yaml";
+  const auto cam = run(gearkit() + quoted(model) + " --dyn " + quoted(dyn));
+  ASSERT_EQ(cam.status, 0) << cam.errors;
+  const auto r = run("'" + std::string(GEARKIT_EXE) + "' dyn " + quoted(dyn) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.errors;
+  EXPECT_EQ(nlohmann::json::parse(r.output)["title"], "camshaft of Nocke \"A\": 3-4-5 # \\ \xC3\x9C") << r.output.substr(0, 300);
+}
+
 }  // namespace

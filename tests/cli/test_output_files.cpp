@@ -179,3 +179,23 @@ TEST(CsvTables, OneTablePerCsvAndWarningsOnStderr) {
   }
   EXPECT_EQ(rows, 5);  // ground, sun, carrier, planet, ring
 }
+
+// Issue 25: `kin --format csv -o FILE` wrote the positions to FILE and an unasked line on stderr
+// ("warning: the CSV holds the positions; the other tables ... with --table NAME"). The positions
+// are the documented CSV of kin; the line names the other tables only when the user chose neither
+// a file nor a table (the CSV on the terminal), and it is not a warning.
+TEST(CsvTables, KinCsvToAFileIsQuiet) {
+  const std::string model = shell_quote(std::string(GEARKIT_SOURCE_DIR) + "/examples/mechanisms/four_bar.yaml");
+  const std::string file = (gearkit::testing::scratch_dir("csv-note") / "positions.csv").string();
+  const auto to_file = run_gearkit("kin " + model + " --format csv -o " + shell_quote(file));
+  ASSERT_EQ(to_file.status, 0) << to_file.err;
+  EXPECT_EQ(to_file.err, "");
+  EXPECT_EQ(slurp(file).rfind("theta2 [deg],", 0), 0u) << slurp(file).substr(0, 200);  // the sweep's positions
+  const auto chosen = run_gearkit("kin " + model + " --format csv --table 1");
+  ASSERT_EQ(chosen.status, 0) << chosen.err;
+  EXPECT_EQ(chosen.err, "");
+  const auto terminal = run_gearkit("kin " + model + " --format csv");
+  ASSERT_EQ(terminal.status, 0) << terminal.err;
+  EXPECT_NE(terminal.err.find("--table NAME"), std::string::npos) << terminal.err;
+  EXPECT_EQ(terminal.out, chosen.out);
+}

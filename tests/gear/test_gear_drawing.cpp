@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -102,6 +104,60 @@ TEST(GearDrawing, RingCutByAShaperCutter) {
   const auto w = run_gearkit("gear --z1 20 --z2 60 --internal --module 2 --cutter-teeth 55 --format json");
   ASSERT_EQ(w.status, 0) << w.err;
   EXPECT_NE(w.out.find("tip interference"), std::string::npos);
+}
+
+// Issue 25: the default cutter of a ring m = 2, z2 = 57, x2 = 0.2 was refused with a message that
+// blamed --cutter-tip-radius, which nobody gave. The default now cuts it cleanly (a cutter of
+// at most |z2| - 10 = 47 teeth, no interference warning); an explicit cutter that cannot cut it
+// is refused naming --cutter-teeth and the cutter's own reason.
+TEST(GearDrawing, DefaultCutterCutsARingWithPositiveShift) {
+  const fs::path dir = gearkit::testing::scratch_dir("gear-drawing-ring57");
+  const std::string svg = shell_quote((dir / "ring57.svg").string());
+  const std::string pair = "gear --z1 20 --z2 57 --internal --module 2 --x2 0.2 --draw gear2 --format json --svg " + svg;
+  const auto r = run_gearkit(pair);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_LE(j["ring_cutter"]["z_0"].get<int>(), 47);
+  EXPECT_EQ(j["ring_cutter"]["tip_interference_mm"].get<double>(), 0.0);
+  EXPECT_EQ(j["ring_cutter"]["involute_interference_mm"].get<double>(), 0.0);
+  for (const auto& w : j["warnings"]) EXPECT_EQ(w.get<std::string>().find("cutter"), std::string::npos) << w;
+  const auto thick = run_gearkit(pair + " --cutter-teeth 48");
+  EXPECT_EQ(thick.status, 2);
+  EXPECT_NE(thick.err.find("option '--cutter-teeth'"), std::string::npos) << thick.err;
+  EXPECT_NE(thick.err.find("too thick for the ring's spaces"), std::string::npos) << thick.err;
+  EXPECT_EQ(thick.err.find("--cutter-tip-radius"), std::string::npos) << thick.err;
+  // z_0 = 47 cuts, trimming the ring's tips: a warning, as at x2 = 0.15.
+  const auto trims = run_gearkit(pair + " --cutter-teeth 47");
+  ASSERT_EQ(trims.status, 0) << trims.err;
+  EXPECT_NE(trims.out.find("tip interference"), std::string::npos);
+}
+
+// Issue 25: the data block labelled single nominal values "max / min". Without inspection options
+// a cell holds one value, W_k = m cos(alpha) [(k - 0.5) pi + z inv(alpha)] (ISO 21771, x = 0),
+// and the row is "span"; with --quality the cells hold the limits and the row says "max / min".
+TEST(GearDrawing, DataBlockSaysMaxMinOnlyForLimits) {
+  const fs::path dir = gearkit::testing::scratch_dir("gear-drawing-labels");
+  const fs::path svg = dir / "pair.svg";
+  const auto r = run_gearkit("gear --z1 20 --z2 40 --module 3 --format json --svg " + shell_quote(svg.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::string text = gearkit::testing::slurp(svg);
+  EXPECT_EQ(text.find("max / min"), std::string::npos);
+  EXPECT_NE(text.find(">span<"), std::string::npos);
+  EXPECT_NE(text.find(">over (ring: between) pins<"), std::string::npos);
+  const double alpha = 20.0 * std::numbers::pi / 180.0, inv = std::tan(alpha) - alpha;
+  for (int i = 0; i < 2; ++i) {
+    const int z = i == 0 ? 20 : 40, k = j["gears"][i]["k_span"].get<int>();
+    const double W = 3.0 * std::cos(alpha) * ((k - 0.5) * std::numbers::pi + z * inv);
+    char cell[64];
+    std::snprintf(cell, sizeof cell, ">k = %d: %.3f<", k, W);
+    EXPECT_NE(text.find(cell), std::string::npos) << cell;
+  }
+  const auto q = run_gearkit("gear --z1 20 --z2 40 --module 3 --quality 7 --svg " + shell_quote(svg.string()));
+  ASSERT_EQ(q.status, 0) << q.err;
+  const std::string limits = gearkit::testing::slurp(svg);
+  EXPECT_NE(limits.find(">span max / min<"), std::string::npos);
+  EXPECT_NE(limits.find(">over (ring: between) pins max / min<"), std::string::npos);
 }
 
 TEST(GearDrawing, BadDrawingOptions) {

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace gg = gearkit::gear;
 
@@ -331,6 +333,41 @@ TEST(ToothForm, RingFilletCutByTheShaperWithinTolerance) {
     const double dev = ring_deviation(spec);
     EXPECT_LE(dev, 1e-3) << spec.z;
   }
+}
+
+// Issue 25: the default cutter for a ring of m = 2, z = 57, x = 0.2 (z_0 = 100 mm / 2 = 50, at most
+// |z| - 10 = 47) was refused with a message about the tip radius. From z_0 = 47 down, the first
+// cutter that cuts this ring cleanly is used: its flank is the shaper cut of the independent
+// simulation within 1 um, with neither interference. A cutter of nearly the ring's size is what
+// RingCutterInterference below warns about (a tooth difference above about 10 to 15 for a 20 deg
+// cutter; more with a positive x of the ring): z_0 = 47 (difference 10) trims the
+// ring's tips (a report warning), and z_0 = 48 has teeth too thick for the ring's spaces at its
+// generating centre distance (inv alpha_w0 < 0), which the message says in those terms.
+TEST(ToothForm, DefaultRingCutterCutsCleanly) {
+  const gg::ToothFormSpec ring57 = ring(57, 2.0, 0.2, 0);
+  const gg::RingCutting cut = gg::ring_cutting(ring57);
+  EXPECT_LE(cut.z_0, 47);
+  EXPECT_GE(cut.z_0, 40);  // still the large cutter asked for, not a small one
+  EXPECT_EQ(cut.involute_interference, 0.0);
+  EXPECT_LE(cut.tip_interference, 1e-7);
+  EXPECT_LE(ring_deviation(ring57), 1e-3);
+  // The next larger cutter is not clean: the default is the largest that is.
+  const gg::RingCutting larger = gg::ring_cutting(ring(57, 2.0, 0.2, cut.z_0 + 1));
+  EXPECT_GT(larger.tip_interference + larger.involute_interference, 1e-7);
+  // z_0 = 47 cuts, trimming the tips; so does the same cutter at x = 0.15, where it always did.
+  EXPECT_GT(gg::ring_cutting(ring(57, 2.0, 0.2, 47)).tip_interference, 0.01);
+  EXPECT_GT(gg::ring_cutting(ring(57, 2.0, 0.15, 47)).tip_interference, 0.01);
+  try {
+    gg::ring_cutting(ring(57, 2.0, 0.2, 48));
+    ADD_FAILURE() << "z_0 = 48 accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("z_0 = 48 cutter's teeth"), std::string::npos) << what;
+    EXPECT_NE(what.find("too thick for the ring's spaces"), std::string::npos) << what;
+    EXPECT_EQ(what.find("rounding"), std::string::npos) << what;
+  }
+  // A ring whose nominal default is clean keeps it (z = 60, m = 2: z_0 = 50).
+  EXPECT_EQ(gg::ring_cutting(ring(60, 2.0, 0.0, 0)).z_0, 50);
 }
 
 TEST(ToothForm, RingCutterInterference) {

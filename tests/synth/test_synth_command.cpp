@@ -3,6 +3,8 @@
 // real executable), the drawing and chart files, reproducibility and bad input.
 #include <run_gearkit.hpp>
 
+#include <gearkit/mechanism/reader.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
@@ -15,6 +17,8 @@
 #include <iomanip>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -369,4 +373,72 @@ TEST(SynthCommand, DwellOutputRestsInKinWhileTheCouplerPointRunsOnTheArc) {
     all_hi = std::max(all_hi, p["outputs"]["theta6_deg"].get<double>());
   }
   EXPECT_NEAR(all_hi - all_lo, w["swing_deg"].get<double>(), 0.01);
+}
+
+namespace {
+
+// The file without its `mechanism:` (title) line.
+std::string without_title(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.rfind("mechanism: ", 0) != 0) out += line + "\n";
+  return out;
+}
+
+}  // namespace
+
+// Issue 25: the title went into the mechanism file unquoted, and the crank-rocker's own default
+// "Crank-rocker: 45.000 deg swing, time ratio 1.25" made the file gearkit wrote unreadable. Every
+// task kind, given a title with ':', '#', both quotes, a line break and non-ASCII letters, writes
+// a file the mechanism reader reads back with that title and otherwise the same text as the
+// example's own run (the same linkage, number for number).
+TEST(SynthCommand, EveryTaskWritesAMechanismThatReadsBackWhateverItsTitle) {
+  const std::string title = "Kurbelschwinge \xE2\x80\x93 \xC3\x9C: 45\xC2\xB0 \"quick\" 'return' # no comment\nline 2";
+  const std::string yaml_title =
+      "\"Kurbelschwinge \xE2\x80\x93 \xC3\x9C: 45\xC2\xB0 \\\"quick\\\" 'return' # no comment\\nline 2\"";
+  const char* const tasks[][3] = {{"function", "function_log10.yaml", ""},
+                                  {"function", "function_slider.yaml", ""},
+                                  {"motion", "three_positions.yaml", ""},
+                                  {"motion", "five_positions.yaml", ""},
+                                  {"path", "path_ellipse.yaml", " --evaluations 20000 --restarts 2 --seed 3"},
+                                  {"crank-rocker", "crank_rocker.yaml", ""},
+                                  {"dwell", "dwell.yaml", ""}};
+  for (const auto& [task, name, extra] : tasks) {
+    std::istringstream in(gearkit::testing::slurp(std::string(GEARKIT_SOURCE_DIR) + "/examples/synthesis/" + name));
+    std::string line, text;
+    while (std::getline(in, line)) text += (line.rfind("synthesis:", 0) == 0 ? "synthesis: " + yaml_title : line) + "\n";
+    const fs::path task_file = write_task(std::string("hostile_") + name, text);
+    const fs::path plain = scratch() / (std::string("plain_") + name), hostile = scratch() / (std::string("titled_") + name);
+    const auto a = run_gearkit(std::string("synth ") + task + " " + example(name) + extra + " -m " + shell_quote(plain.string()));
+    const auto b = run_gearkit(std::string("synth ") + task + " " + shell_quote(task_file.string()) + extra + " -m " +
+                               shell_quote(hostile.string()));
+    ASSERT_EQ(a.status, 0) << name << a.err;
+    ASSERT_EQ(b.status, 0) << name << b.err;
+    const auto mech = gearkit::mechanism::load_mechanism(hostile.string(), [](std::string_view) { return nullptr; });
+    EXPECT_EQ(mech.title, title) << name;
+    EXPECT_EQ(without_title(gearkit::testing::slurp(hostile)), without_title(gearkit::testing::slurp(plain))) << name;
+  }
+  // The crank-rocker's default title (Norton's example: 45 deg swing, Q = 1.25) reads back too.
+  const fs::path untitled = write_task("untitled.yaml", "swing: 45 deg\ntime_ratio: 1.25\nrocker: 100 mm\n");
+  const fs::path out = scratch() / "untitled_mechanism.yaml";
+  const auto r = run_gearkit("synth crank-rocker " + shell_quote(untitled.string()) + " -m " + shell_quote(out.string()));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(gearkit::mechanism::load_mechanism(out.string(), [](std::string_view) { return nullptr; }).title,
+            "Crank-rocker: 45.000 deg swing, time ratio 1.25");
+}
+
+// Issue 25: the solver check counted checkpoints, two per pose (point and angle), and said "6
+// precision positions" for the 3 poses of examples/synthesis/three_positions.yaml.
+TEST(SynthCommand, SolverCheckCountsPosesNotCheckpoints) {
+  for (const auto& [name, poses] : {std::pair{"two_positions.yaml", 2}, {"three_positions.yaml", 3}, {"four_positions.yaml", 4},
+                                    {"five_positions.yaml", 5}}) {
+    const auto r = run_gearkit(std::string("synth motion ") + example(name));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("driven through the " + std::to_string(poses) + " precision positions"), std::string::npos) << r.out;
+  }
+  // A function generator checks one value per precision point: three for the log10 example.
+  const auto f = run_gearkit("synth function " + example("function_log10.yaml"));
+  ASSERT_EQ(f.status, 0) << f.err;
+  EXPECT_NE(f.out.find("driven through the 3 precision positions"), std::string::npos) << f.out;
 }

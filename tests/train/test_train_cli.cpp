@@ -6,7 +6,9 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -483,4 +485,54 @@ TEST(TrainCli, TheEntriesOfATrainFileAreBounded) {
   EXPECT_EQ(too_many_gears.status, 2);
   EXPECT_NE(too_many_gears.err.find("gears.yaml:8003:5: 'gears': expected at most 8000 entries"), std::string::npos)
       << too_many_gears.err;
+}
+
+namespace {
+
+int largest_tooth_count(const nlohmann::json& candidates) {
+  int most = 0;
+  for (const auto& c : candidates)
+    for (const char* z : {"z1", "z2", "z3", "z4"}) most = std::max(most, c[z].get<int>());
+  return most;
+}
+
+}  // namespace
+
+// Issue 25: --z-max defaulted to max(150, --z-min) while its help said 150. The help states the
+// rule, and the search follows it: alone, --z-min 160 searches 160 teeth only, so ratio 1 with
+// equal modules is z1 = z2 = z3 = z4 = 160 (m (z1 + z2) = m (z3 + z4) holds); without it no
+// candidate passes 150 teeth (ratio 1/100 = 15/150 * 15/150 needs them all).
+TEST(TrainCli, SynthZMaxDefaultIsWhatTheHelpSays) {
+  const CliRun help = gearkit("train synth --help");
+  ASSERT_EQ(help.status, 0) << help.err;
+  std::string words;  // the help wrapped into lines, read as one line
+  for (char c : help.out)
+    if (!std::isspace(static_cast<unsigned char>(c)) || (!words.empty() && words.back() != ' ')) words += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  EXPECT_NE(words.find("most teeth (default 150, or the --z-min value if that is larger)"), std::string::npos) << help.out;
+  const CliRun high = gearkit("train synth reducer --m1 1 --m2 1 --ratio 1 --z-min 160 --format json");
+  ASSERT_EQ(high.status, 0) << high.err;
+  const auto j = json_of(high);
+  ASSERT_EQ(j["candidates"].size(), 1u) << j;
+  for (const char* z : {"z1", "z2", "z3", "z4"}) EXPECT_EQ(j["candidates"][0][z], 160) << z;
+  const CliRun plain = gearkit("train synth reducer --m1 1 --m2 1 --ratio 1/100 --max-results 200 --format json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto p = json_of(plain);
+  ASSERT_FALSE(p["candidates"].empty());
+  EXPECT_EQ(largest_tooth_count(p["candidates"]), 150);
+}
+
+// Issue 25: a planet that meshes nothing said "not checked" in the assembly table and then
+// "Warnings: none". The train is suspect: the report warns.
+TEST(TrainCli, PlanetMeshingNoCentralGearIsAWarning) {
+  const std::string model = model_file("lonely_planet_warning.yaml", "members: [a, {name: p, carried_by: a, count: 2}]\n"
+                                                                     "gears: []\nmeshes: []\n");
+  const CliRun text = gearkit("train " + model);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_EQ(text.out.find("Warnings: none"), std::string::npos) << text.out;
+  const CliRun json = gearkit("train " + model + " --format json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  const auto w = json_of(json)["warnings"];
+  ASSERT_EQ(w.size(), 1u) << w;
+  EXPECT_EQ(w[0], "assembly of planet 'p' on carrier 'a' (equal spacing) not checked: the planet meshes no central gear");
+  EXPECT_EQ(gearkit("train " + model + " --strict").status, 3);
 }

@@ -45,6 +45,18 @@ struct LawFormula {
 };
 std::optional<LawFormula> law_formula(Law law, std::string_view u);
 
+/// One piece of a law on [u0, u1] with its formulas (as law_formula writes them).
+struct LawPiece {
+  double u0 = 0, u1 = 1;
+  LawFormula formula;
+};
+/// The law piece by piece: one piece [0, 1] for the single-expression laws, the pieces the law
+/// is joined from otherwise (parabolic 2, modified trapezoid 5, modified sine 3), in closed form
+/// with exact constants (Norton, Design of Machinery, sec. 8.4, whose decimals they reproduce:
+/// modified sine y = 0.43990085 u - 0.0350062 sin(4 pi u) on [0, 1/8] is
+/// (pi u - sin(4 pi u)/4)/(4 + pi)).
+std::vector<LawPiece> law_pieces(Law law, std::string_view u);
+
 /// The values of u inside (0, 1) where the law is pieced together, so that a derivative may
 /// jump there: parabolic {1/2} (acceleration), modified trapezoid {1/8, 3/8, 5/8, 7/8} and
 /// modified sine {1/8, 7/8} (continuous up to the jerk, checked all the same); none for the

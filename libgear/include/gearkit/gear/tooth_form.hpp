@@ -35,13 +35,15 @@ struct ProfileVertex {
 
 /// The pinion-type cutter that cuts a ring (transverse section).
 struct ShaperCutter {
-  int z_0 = 0;            ///< number of teeth; 0: default_cutter_teeth
+  int z_0 = 0;            ///< number of teeth; 0: the default (ring_cutting)
   double rho_a0 = -1.0;   ///< tip rounding radius, mm; negative: rho_fP* m_n, or 3/4 of the largest that fits if smaller
   double x_0 = 0.0;       ///< profile shift coefficient of the cutter
 };
 
-/// The cutter a ring is drawn with when none is given: about 100 mm reference diameter
-/// (z_0 = 100 mm / m_t rounded), at least 10 teeth and at most |z| - 10 (|z| - 3 for small rings).
+/// The nominal cutter a ring is drawn with when none is given: about 100 mm reference diameter
+/// (z_0 = 100 mm / m_t rounded, a common disc shaper cutter size), at
+/// least 10 teeth and at most |z| - 10 (|z| - 3 for small rings). The cutter used is the first
+/// from this one downwards that cuts the ring cleanly (ring_cutting).
 /// @throws std::invalid_argument for a ring of fewer than 8 teeth.
 int default_cutter_teeth(int z_ring, double m_t);
 
@@ -82,9 +84,15 @@ struct RingCutting {
   double tip_interference = 0;
 };
 
-/// The generating mesh of a ring (spec.z < 0) and its interference checks.
-/// @throws std::invalid_argument if spec is not a ring, the cutter does not fit (z_0 >= |z|,
-/// fewer than 5 teeth, its tip below its base circle, a tip rounding that does not fit the tooth).
+/// The generating mesh of a ring (spec.z < 0) and its interference checks. With spec.cutter.z_0
+/// = 0 the cutter is the first of default_cutter_teeth, one tooth fewer, ... 5 teeth that cuts
+/// the ring cleanly (no involute interference, tip interference below 1e-7 mm: a cutter of
+/// nearly the ring's size trims the ring's teeth, and a thick-toothed ring with positive x may
+/// leave it no generating mesh at all); if none does, the largest that cuts it at all.
+/// @throws std::invalid_argument if spec is not a ring or the cutter cannot cut it, each message
+/// naming the cutter's z_0 and its reason: z_0 >= |z| or fewer than 5 teeth, its tip below its
+/// base circle, a tip rounding that does not fit the tooth, teeth too thick for the ring's spaces
+/// (inv alpha_w0 <= 0), a tip that never reaches the ring's flank.
 RingCutting ring_cutting(const ToothFormSpec& spec);
 
 /// Closed outline of the whole gear, counter-clockwise, with exact arcs (bulges) on the root and

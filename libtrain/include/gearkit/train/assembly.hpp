@@ -35,6 +35,9 @@ struct AssemblyCheck {
   bool checked = false;   ///< false: not applicable or data missing (see detail)
   bool satisfied = false;
   std::string detail;     ///< the numbers, for the report
+  /// Not checked because the train itself looks wrong, which a report should warn about: a
+  /// planet that meshes no gear at all (nothing to space the planets against).
+  bool suspect = false;
 };
 
 /// Runs every assembly check that applies. Centre distances count as equal within
