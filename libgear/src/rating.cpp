@@ -106,7 +106,7 @@ void dynamic_factor(const Mesh& m, const RatingInput& in, PairRating& r) {
   const double F_per_b = in.K_A * r.F_t / m.b;
   const double z_n2 = m.internal ? std::numeric_limits<double>::infinity() : m.z_n[1];
   r.c_th = iso::theoretical_single_stiffness(iso::minimum_flank_deformation(m.z_n[0], z_n2, m.x[0], m.x[1]));
-  // Two tools: the mean of both gears' C_B (ISO 6336-1:2019 9.3.5, Eq. 83 note).
+  // Two tools: C_B = 0.5 (C_B1 + C_B2), ISO 6336-1's rule for pinion and wheel of different basic racks.
   const double C_B = m.h_fP[0] == m.h_fP[1] ? iso::basic_rack_factor(m.h_fP[0], m.alpha_n)
                                             : 0.5 * (iso::basic_rack_factor(m.h_fP[0], m.alpha_n) + iso::basic_rack_factor(m.h_fP[1], m.alpha_n));
   r.c_prime = iso::single_stiffness(r.c_th, 0.8, 1.0, C_B, m.beta, F_per_b);

@@ -314,10 +314,10 @@ TEST(GearRatingCli, PerGearLoadData) {
   // T_1 = T_2 z1/z2 (mesh efficiency 1).
   const auto t2 = json_of(base + "--torque2 " + std::to_string(9000.0 * 103.0 / 17.0) + " --root-roughness 10,20");
   EXPECT_NEAR(t2["rating"]["T_1_Nm"].get<double>(), 9000.0, 1e-3);
-  // Y_RrelT = 1.674 - 0.529 (R_z + 1)^0.1 for case-carburized steel (ISO 6336-3:2019 Table 5).
+  // Y_RrelT = 1.674 - 0.529 (R_z + 1)^0.1 for case-carburized steel, 1 <= R_z <= 40 um (ISO 6336-3:2019 12.3).
   EXPECT_NEAR(t2["rating"]["gears"][0]["Y_RrelT"].get<double>(), 1.674 - 0.529 * std::pow(11.0, 0.1), 1e-12);
   EXPECT_NEAR(t2["rating"]["gears"][1]["Y_RrelT"].get<double>(), 1.674 - 0.529 * std::pow(21.0, 0.1), 1e-12);
-  // Fully reversed bending of gear 2 only: Y_M = 0.7 (ISO 6336-3:2019 Annex B for idlers).
+  // Fully reversed bending of gear 2 only: mean stress factor Y_M = 0.7 of ISO 6336-3 for an idler.
   const auto rev = json_of(base + "--torque1 9kN*m --reversed-bending2");
   EXPECT_DOUBLE_EQ(rev["rating"]["gears"][0]["Y_M"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(rev["rating"]["gears"][1]["Y_M"].get<double>(), 0.7);

@@ -95,7 +95,7 @@ double face_width_of(const GearPairInput& in, int i);
 /// gears have one width and no offset. Overlap ratio and load capacity use it (ISO 6336: b).
 double common_face_width(const GearPairInput& in);
 
-/// Face width of gear i for its tooth root stress, mm (ISO 6336-3:2019 clause 5, DIN 3990-3: a
+/// Face width of gear i for its tooth root stress, mm (ISO 6336-3, DIN 3990-3: a
 /// wider face carries at most one module m_n beyond the mate's on each side): the common width
 /// plus, on each side, what the gear's face extends beyond the mate's, at most m_n.
 double root_face_width(const GearPairInput& in, int i, double m_n);
