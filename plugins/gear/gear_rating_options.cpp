@@ -73,13 +73,16 @@ std::array<double, 2> per_gear(const io::po::variables_map& vm, const char* key,
   const auto comma = s.find(',');
   const std::string parts[2] = {s.substr(0, comma), comma == std::string::npos ? s : s.substr(comma + 1)};
   std::array<double, 2> v{};
+  if (parts[1].find(',') != std::string::npos) {
+    fail(key, fmt::format("expected one number or two (gear 1,gear 2), found {}", s.substr(0, 60)));
+  }
   for (int i = 0; i < 2; ++i) {
     try {
       v[i] = io::parse_quantity_si(parts[i], io::Quantity::dimensionless, "");
     } catch (const io::QuantityError& e) {
       fail(key, e.what());
     }
-    if (!(std::isfinite(v[i]) && (v[i] > 0.0 || (zero_ok && v[i] == 0.0))) || parts[i].find(',') != std::string::npos) {
+    if (!(std::isfinite(v[i]) && (v[i] > 0.0 || (zero_ok && v[i] == 0.0)))) {
       fail(key, fmt::format("expected one number {} 0 or two (gear 1,gear 2), found {}", zero_ok ? ">=" : ">", s.substr(0, 60)));
     }
   }
