@@ -105,6 +105,62 @@ double max_specific_sliding(int z_i, int z_j, double d_bj, double d_aj, double a
 
 double teeth_sum_for_centre_distance(double a, double m_n, double beta) { return 2.0 * a * std::cos(beta) / m_n; }
 
+double face_width_of(const GearPairInput& in, int i) { return in.face_widths[static_cast<std::size_t>(i)].value_or(in.face_width); }
+
+namespace {
+
+// Axial ends of the faces: gear 1 centred on 0, gear 2 on face_offset.
+struct FaceEnds {
+  double left[2], right[2];
+};
+
+FaceEnds face_ends(const GearPairInput& in) {
+  FaceEnds f{};
+  for (int i = 0; i < 2; ++i) {
+    const double c = i == 0 ? 0.0 : in.face_offset, half = 0.5 * face_width_of(in, i);
+    f.left[i] = c - half;
+    f.right[i] = c + half;
+  }
+  return f;
+}
+
+}  // namespace
+
+double common_face_width(const GearPairInput& in) {
+  if (!in.face_widths[0] && !in.face_widths[1] && in.face_offset == 0.0) return in.face_width;
+  const FaceEnds f = face_ends(in);
+  return std::max(0.0, std::min(f.right[0], f.right[1]) - std::max(f.left[0], f.left[1]));
+}
+
+double root_face_width(const GearPairInput& in, int i, double m_n) {
+  const double b = common_face_width(in);
+  if (!in.face_widths[0] && !in.face_widths[1] && in.face_offset == 0.0) return b;
+  const FaceEnds f = face_ends(in);
+  const double beyond_left = std::max(0.0, std::max(f.left[0], f.left[1]) - f.left[i]);
+  const double beyond_right = std::max(0.0, f.right[i] - std::min(f.right[0], f.right[1]));
+  return b + std::min(m_n, beyond_left) + std::min(m_n, beyond_right);
+}
+
+Rack tool_rack(const GearPairInput& in, int i, double alpha_n) {
+  const std::optional<Rack>& own = in.tool[static_cast<std::size_t>(i)];
+  return own ? Rack{alpha_n, own->h_aP, own->h_fP, own->rho_fP} : Rack{alpha_n, in.h_aP, in.h_fP, in.rho_fP};
+}
+
+HelixHand helix_hand(const GearPairInput& in, int i) {
+  if (in.helix_angle == 0.0) return HelixHand::spur;
+  const bool right = (in.helix_angle > 0.0) == (i == 0 || in.internal);
+  return right ? HelixHand::right : HelixHand::left;
+}
+
+const char* to_string(HelixHand hand) {
+  switch (hand) {
+    case HelixHand::spur: return "spur";
+    case HelixHand::right: return "right";
+    case HelixHand::left: return "left";
+  }
+  return "spur";
+}
+
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -114,7 +170,7 @@ struct Basics {
   double m_n = 0, m_t = 0, alpha_n = 0, alpha_t = 0, beta = 0, beta_b = 0;
   double inv_alpha_t = 0, tan_alpha_n = 0, cos_beta = 1, cos_beta_b = 1;  // used by every gear: computed once
   double d1 = 0, d2 = 0, d_b1 = 0, d_b2 = 0, a_d = 0;
-  Rack rack;
+  std::array<Rack, 2> rack;  // the tool of each gear
 };
 
 // The message is built only on failure: validation runs on every table.
@@ -135,6 +191,12 @@ Basics basics_of(const GearPairInput& in) {
           fmt::format("expected a helix angle with |beta| < 45 deg, found {} deg", in.helix_angle / kDeg); });
   require(std::isfinite(in.face_width) && in.face_width >= 0.0, "face_width", [&] { return
           fmt::format("expected a face width >= 0 mm, found {}", in.face_width); });
+  for (int i = 0; i < 2; ++i) {
+    const std::optional<double>& b_i = in.face_widths[static_cast<std::size_t>(i)];
+    require(!b_i || (std::isfinite(*b_i) && *b_i >= 0.0), i == 0 ? "face_width1" : "face_width2", [&] { return
+            fmt::format("expected a face width >= 0 mm, found {}", *b_i); });
+  }
+  require(std::isfinite(in.face_offset), "face_offset", [&] { return fmt::format("expected a finite offset, found {}", in.face_offset); });
   Basics b;
   b.beta = in.helix_angle;
   if (in.system == ModuleSystem::normal) {
@@ -148,11 +210,13 @@ Basics basics_of(const GearPairInput& in) {
     b.m_n = b.m_t * std::cos(b.beta);
     b.alpha_n = normal_pressure_angle(b.alpha_t, b.beta);
   }
-  b.rack = Rack{b.alpha_n, in.h_aP, in.h_fP, in.rho_fP};
-  try {
-    validate(b.rack);
-  } catch (const std::invalid_argument& e) {
-    throw GeometryError("rack", e.what());
+  for (int i = 0; i < 2; ++i) {
+    b.rack[i] = tool_rack(in, i, b.alpha_n);
+    try {
+      validate(b.rack[i]);
+    } catch (const std::invalid_argument& e) {
+      throw GeometryError(in.tool[i] ? (i == 0 ? "tool1" : "tool2") : "rack", in.tool[i] ? fmt::format("tool of gear {}: {}", i + 1, e.what()) : e.what());
+    }
   }
   b.beta_b = base_helix_angle(b.beta, b.alpha_n);
   b.inv_alpha_t = involute(b.alpha_t);
@@ -172,8 +236,8 @@ Basics basics_of(const GearPairInput& in) {
 // Tip diameters and the specific sliding difference for a trial x1 (x2 = sum_x - x1).
 double sliding_difference(const Basics& b, double sum_x, double k, double a, double alpha_wt, double x1) {
   const double x2 = sum_x - x1;
-  const double d_a1 = tip_diameter(b.d1, b.m_n, b.rack.h_aP, x1, k);
-  const double d_a2 = tip_diameter(b.d2, b.m_n, b.rack.h_aP, x2, k);
+  const double d_a1 = tip_diameter(b.d1, b.m_n, b.rack[0].h_aP, x1, k);
+  const double d_a2 = tip_diameter(b.d2, b.m_n, b.rack[1].h_aP, x2, k);
   const double z1 = max_specific_sliding(b.Z1, b.Z2, b.d_b2, d_a2, a, alpha_wt);
   const double z2 = max_specific_sliding(b.Z2, b.Z1, b.d_b1, d_a1, a, alpha_wt);
   if (std::isinf(z1) && std::isinf(z2)) return std::numeric_limits<double>::quiet_NaN();
@@ -238,7 +302,7 @@ namespace {
 double full_tip_thickness(const Basics& b, int i, double x) {
   const double d = i == 0 ? b.d1 : b.d2;
   const double d_b = i == 0 ? b.d_b1 : b.d_b2;
-  const double d_a = tip_diameter(d, b.m_n, b.rack.h_aP, x, 0.0);
+  const double d_a = tip_diameter(d, b.m_n, b.rack[i].h_aP, x, 0.0);
   if (std::fabs(d_a) <= std::fabs(d_b)) return 1.0;
   return tooth_thickness_at(reference_tooth_thickness(b.m_t, x, b.alpha_n), d, d_b, b.alpha_t, d_a);
 }
@@ -288,9 +352,9 @@ struct Work {
 double undercut_limit_of(const Basics& b, int i, UndercutLimit limit) {
   const int z = i == 0 ? b.Z1 : b.Z2;
   if (z < 0) return -std::numeric_limits<double>::infinity();
-  if (limit == UndercutLimit::iso) return min_shift_no_undercut(i == 0 ? b.d1 : b.d2, b.m_n, b.alpha_t, b.rack);
+  if (limit == UndercutLimit::iso) return min_shift_no_undercut(i == 0 ? b.d1 : b.d2, b.m_n, b.alpha_t, b.rack[i]);
   const double z_n = b.beta == 0.0 ? z : virtual_number_of_teeth(z, b.beta, b.alpha_n);
-  return practical_min_shift(z_n, b.rack);
+  return practical_min_shift(z_n, b.rack[i]);
 }
 
 // The split with the least max |x_i| that keeps x_i >= the undercut limits: x1 = sum/2
@@ -449,9 +513,10 @@ void gear_dimensions(Work& w, int i, GearResult& g) {
   g.alpha_t = b.alpha_t;
   g.beta = b.beta;
   g.beta_b = b.beta_b;
-  const double d_a = tip_diameter(d[i], b.m_n, b.rack.h_aP, g.x, k_used);
+  const double side = ring ? -1.0 : 1.0;  // explicit diameters are magnitudes
+  const double d_a = w.in.d_a[i] ? side * *w.in.d_a[i] : tip_diameter(d[i], b.m_n, b.rack[i].h_aP, g.x, k_used);
   w.d_a[i] = d_a;
-  const double d_f = root_diameter(d[i], b.m_n, b.rack.h_fP, g.x);
+  const double d_f = w.in.d_f[i] ? side * *w.in.d_f[i] : root_diameter(d[i], b.m_n, b.rack[i].h_fP, g.x);
   const double d_w = 2.0 * a * Z[i] / (b.Z1 + b.Z2);
   g.d = std::fabs(d[i]);
   g.d_b = std::fabs(d_b[i]);
@@ -491,9 +556,9 @@ void gear_measurements(Work& w, int i, GearResult& g, std::vector<std::string>& 
   const ToothData nominal = tooth_data(i, b, s_t[i]);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (!ring) {
-    g.x_min = min_shift_no_undercut(d[i], b.m_n, b.alpha_t, b.rack);
-    g.x_min_practical = practical_min_shift(g.z_n, b.rack);
-    const double rho_Ff = form_roll_length(d_b[i], b.alpha_t, b.m_n, g.x, b.rack);
+    g.x_min = min_shift_no_undercut(d[i], b.m_n, b.alpha_t, b.rack[i]);
+    g.x_min_practical = practical_min_shift(g.z_n, b.rack[i]);
+    const double rho_Ff = form_roll_length(d_b[i], b.alpha_t, b.m_n, g.x, b.rack[i]);
     w.rho_Ff[i] = std::max(0.0, rho_Ff);
     g.d_Ff = rho_Ff > 0.0 ? 2.0 * std::hypot(0.5 * g.d_b, rho_Ff) : g.d_b;
   } else {
@@ -550,7 +615,7 @@ void pair_quantities(Work& w, GearPairResult& r) {
   w.g_len = a * std::sin(alpha_wt);
   const double rho_tip1 = w.rho_tip1, rho_tip2 = w.rho_tip2;
   p.eps_alpha = transverse_contact_ratio_from_lengths(rho_tip1, rho_tip2, a, alpha_wt, r.gear[0].p_bt);
-  p.eps_beta = overlap_ratio(in.face_width, b.beta, b.m_n);
+  p.eps_beta = overlap_ratio(common_face_width(in), b.beta, b.m_n);
   p.eps_gamma = p.eps_alpha + p.eps_beta;
   p.c1 = tip_clearance(a, d_a1, d_f2);
   p.c2 = tip_clearance(a, d_a2, d_f1);
@@ -598,6 +663,20 @@ void tooth_checks(const Work& w, GearPairResult& r) {
     warn(fmt::format("transverse contact ratio {:.3f} < 1: the pair does not mesh continuously", p.eps_alpha));
   } else if (p.eps_alpha < 1.2) {
     warn(fmt::format("transverse contact ratio {:.3f} < 1.2", p.eps_alpha));
+  }
+}
+
+// Explicit root diameters that the tool does not cut: the tool data then do not describe the gear
+// (the root rating and the form circle use the tool).
+void root_diameter_checks(const Work& w, GearPairResult& r) {
+  for (int i = 0; i < 2; ++i) {
+    if (!w.in.d_f[i]) continue;
+    const double cut = std::fabs(root_diameter(i == 0 ? w.b.d1 : w.b.d2, w.b.m_n, w.b.rack[i].h_fP, r.gear[i].x));
+    if (std::fabs(*w.in.d_f[i] - cut) > 1e-3) {
+      r.warnings.push_back(fmt::format("gear {}: root diameter d_f = {:.4f} mm given, the tool (h_fP* = {:g}) cuts {:.4f} mm: "
+                                       "the tooth root rating uses the tool",
+                                       i + 1, *w.in.d_f[i], w.b.rack[i].h_fP, cut));
+    }
   }
 }
 
@@ -652,9 +731,10 @@ void measurement_checks(const Work& w, GearPairResult& r) {
                        i + 1, g.pin_diameter, g.M_d, g.d_a));
     }
     // The anvils of a span measurement must lie on the face: b > W_k sin(beta_b).
-    if (g.k_span > 0 && in.face_width > 0.0 && in.face_width <= g.W_k * std::sin(std::fabs(b.beta_b))) {
+    const double b_i = face_width_of(in, i);
+    if (g.k_span > 0 && b_i > 0.0 && b_i <= g.W_k * std::sin(std::fabs(b.beta_b))) {
       warn(fmt::format("gear {}: face width {:.3f} mm too narrow for the span over {} teeth (needs > {:.3f} mm)", i + 1,
-                       in.face_width, g.k_span, g.W_k * std::sin(std::fabs(b.beta_b))));
+                       b_i, g.k_span, g.W_k * std::sin(std::fabs(b.beta_b))));
     }
   }
   if (p.c1 < -1e-9) warn(fmt::format("negative tip clearance {:.3f} mm between the tip of gear 1 and the root of gear 2", p.c1));
@@ -662,7 +742,16 @@ void measurement_checks(const Work& w, GearPairResult& r) {
   if (p.j_wt < -1e-9) warn(fmt::format("negative backlash {:.4f} mm: the teeth jam at the actual centre distance", p.j_wt));
 }
 
+void check_diameters(const GearPairInput& in) {
+  for (int i = 0; i < 2; ++i) {
+    for (const auto& [value, field] : {std::pair{in.d_a[i], i == 0 ? "d_a1" : "d_a2"}, std::pair{in.d_f[i], i == 0 ? "d_f1" : "d_f2"}}) {
+      require(!value || (std::isfinite(*value) && *value > 0.0), field, [&] { return fmt::format("expected a diameter > 0 mm, found {}", *value); });
+    }
+  }
+}
+
 GearPairResult compute_checked(const GearPairInput& in) {
+  check_diameters(in);
   Work w{in, basics_of(in)};
   w.sign = in.internal ? -1.0 : 1.0;
   GearPairResult r;
@@ -681,6 +770,7 @@ GearPairResult compute_checked(const GearPairInput& in) {
   tooth_checks(w, r);
   interference_checks(w, r);
   measurement_checks(w, r);
+  root_diameter_checks(w, r);
   return r;
 }
 

@@ -49,15 +49,20 @@ Mesh mesh_of(const GearPairInput& in, const GearPairResult& r) {
   m.d = {g1.d, g2.d};
   m.d_b = {g1.d_b, g2.d_b};
   m.d_a = {g1.d_a, g2.d_a};
+  m.d_Na = m.d_a;
   m.d_f = {g1.d_f, g2.d_f};
   m.d_w = {g1.d_w, g2.d_w};
   m.x = {g1.x, g2.x};
   m.A_sn = {g1.A_sn, g2.A_sn};
   m.z_n = {g1.z_n, g2.z_n};
   m.u = r.pair.u;
-  m.b = in.face_width;
-  m.h_fP = in.h_fP;
-  m.rho_fP = in.rho_fP;
+  m.b = common_face_width(in);
+  m.b_F = {root_face_width(in, 0, g1.m_n), root_face_width(in, 1, g1.m_n)};
+  for (int i = 0; i < 2; ++i) {
+    const Rack tool = tool_rack(in, i, g1.alpha_n);
+    m.h_fP[i] = tool.h_fP;
+    m.rho_fP[i] = tool.rho_fP;
+  }
   m.eps_alpha = r.pair.eps_alpha;
   m.eps_beta = r.pair.eps_beta;
   m.eps_gamma = r.pair.eps_gamma;
@@ -103,7 +108,9 @@ void dynamic_factor(const Mesh& m, const RatingInput& in, PairRating& r) {
   const double F_per_b = in.K_A * r.F_t / m.b;
   const double z_n2 = m.internal ? std::numeric_limits<double>::infinity() : m.z_n[1];
   r.c_th = iso::theoretical_single_stiffness(iso::minimum_flank_deformation(m.z_n[0], z_n2, m.x[0], m.x[1]));
-  const double C_B = iso::basic_rack_factor(m.h_fP, m.alpha_n);
+  // Two tools: C_B = 0.5 (C_B1 + C_B2), ISO 6336-1's rule for pinion and wheel of different basic racks.
+  const double C_B = m.h_fP[0] == m.h_fP[1] ? iso::basic_rack_factor(m.h_fP[0], m.alpha_n)
+                                            : 0.5 * (iso::basic_rack_factor(m.h_fP[0], m.alpha_n) + iso::basic_rack_factor(m.h_fP[1], m.alpha_n));
   r.c_prime = iso::single_stiffness(r.c_th, 0.8, 1.0, C_B, m.beta, F_per_b);
   r.c_gamma_alpha = iso::mesh_stiffness_alpha(r.c_prime, m.eps_alpha);
   r.c_gamma_beta = iso::mesh_stiffness_beta(r.c_gamma_alpha);
@@ -270,6 +277,7 @@ void validate(const RatingInput& in) {
     require(in.R_z_flank[i] > 0.0 && std::isfinite(in.R_z_flank[i]), "R_z_flank", [&] { return fmt::format("expected a flank roughness > 0 um, found {}", in.R_z_flank[i]); });
     require(in.R_z_root[i] >= 0.0 && std::isfinite(in.R_z_root[i]), "R_z_root", [&] { return fmt::format("expected a root roughness >= 0 um, found {}", in.R_z_root[i]); });
     require(in.s_R[i] >= 0.0 && std::isfinite(in.s_R[i]), "s_R", [&] { return fmt::format("expected a rim thickness >= 0 mm, found {}", in.s_R[i]); });
+    require(!in.s_pr_gear[i] || (std::isfinite(*in.s_pr_gear[i]) && *in.s_pr_gear[i] >= 0.0), "s_pr", [&] { return fmt::format("expected a residual protuberance >= 0, found {}", *in.s_pr_gear[i]); });
     require(in.cycles_per_rev[i] > 0.0 && std::isfinite(in.cycles_per_rev[i]), "cycles_per_rev", [&] { return fmt::format("expected load cycles per turn > 0, found {}", in.cycles_per_rev[i]); });
   }
   for (int f = 0; f < kFactorCount; ++f) {
@@ -317,10 +325,70 @@ PairRating iso_operating_point(const Mesh& m, const RatingInput& in, double T_1,
 
 }  // namespace detail
 
-PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& in) {
+namespace {
+
+// T_2 -> T_1 and N_L1 -> life_h, the alternative ways of giving the load and the life.
+RatingInput with_load_of_gear1(const GearPairResult& geometry, RatingInput in) {
+  if (in.T_2 != 0.0) {
+    require(in.T_1 == 0.0, "T_2", [&] { return fmt::format("give the torque on gear 1 or on gear 2, not both (found {} and {} N m)", in.T_1, in.T_2); });
+    require(std::isfinite(in.T_2) && in.T_2 > 0.0, "T_2", [&] { return fmt::format("expected a torque > 0 N m, found {}", in.T_2); });
+    in.T_1 = in.T_2 * geometry.gear[0].z / geometry.gear[1].z;
+  }
+  if (!std::isnan(in.N_L1)) {
+    require(std::isfinite(in.N_L1) && in.N_L1 > 0.0, "N_L1", [&] { return fmt::format("expected load cycles > 0, found {}", in.N_L1); });
+    require(in.spectrum.empty(), "N_L1", [&] { return std::string("a load spectrum gives its life in hours: give the life in hours"); });
+    if (std::isfinite(in.n_1) && in.n_1 > 0.0 && in.cycles_per_rev[0] > 0.0) in.life_h = detail::hours_for_cycles(in.N_L1, in.n_1, in.cycles_per_rev[0]);
+  }
+  return in;
+}
+
+// The usable tip diameters d_Na (given, or d_a less a chamfer) replace d_a in the rating, and
+// the transverse contact ratio follows them (ISO 6336-1: eps_alpha from d_Na).
+void usable_tips(const GearPairResult& geometry, const RatingInput& in, Mesh& m) {
+  bool changed = false;
+  for (int i = 0; i < 2; ++i) {
+    const char* field = i == 0 ? "d_Na1" : "d_Na2";
+    require(!(in.d_Na[i] && in.h_K[i]), field, [&] { return fmt::format("gear {}: give the usable tip diameter or the tip chamfer, not both", i + 1); });
+    const bool ring = i == 1 && m.internal;
+    double d_Na = m.d_a[i];
+    if (in.h_K[i]) {
+      require(std::isfinite(*in.h_K[i]) && *in.h_K[i] >= 0.0, i == 0 ? "h_K1" : "h_K2", [&] { return fmt::format("expected a tip chamfer >= 0 mm, found {}", *in.h_K[i]); });
+      d_Na = m.d_a[i] + (ring ? 2.0 : -2.0) * *in.h_K[i];
+    } else if (in.d_Na[i]) {
+      d_Na = *in.d_Na[i];
+    } else {
+      continue;
+    }
+    const bool inside = ring ? d_Na >= m.d_a[i] - 1e-9 : d_Na <= m.d_a[i] + 1e-9;
+    require(std::isfinite(d_Na) && d_Na > m.d_b[i] && inside, in.h_K[i] ? (i == 0 ? "h_K1" : "h_K2") : field, [&] {
+      return fmt::format("gear {}: expected a usable tip diameter between the base circle {:.4f} mm and the tip circle {:.4f} mm, found {:.4f} mm",
+                         i + 1, m.d_b[i], m.d_a[i], d_Na);
+    });
+    m.d_Na[i] = d_Na;
+    changed = true;
+  }
+  if (!changed) return;
+  const double s = m.internal ? -1.0 : 1.0;
+  auto roll = [](double d_a, double d_b) { return 0.5 * std::sqrt(d_a * d_a - d_b * d_b); };
+  m.eps_alpha = transverse_contact_ratio_from_lengths(roll(m.d_Na[0], m.d_b[0]), s * roll(m.d_Na[1], m.d_b[1]), s * geometry.pair.a,
+                                                      m.alpha_wt, geometry.gear[0].p_bt);
+  m.eps_gamma = m.eps_alpha + m.eps_beta;
+}
+
+}  // namespace
+
+PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairResult& geometry, const RatingInput& given) {
+  const RatingInput in = with_load_of_gear1(geometry, given);
   validate(in);
-  require(geometry_input.face_width > 0.0, "face_width", [&] { return "the rating needs a face width b > 0 mm"; });
-  const Mesh m = detail::mesh_of(geometry_input, geometry);
+  require(common_face_width(geometry_input) > 0.0, "face_width", [&] { return "the rating needs a common face width b > 0 mm"; });
+  Mesh m = detail::mesh_of(geometry_input, geometry);
+  for (int i = 0; i < 2; ++i) {
+    if (in.A_sne[i]) {
+      require(std::isfinite(*in.A_sne[i]), "A_sne", [&] { return fmt::format("expected a finite allowance, found {}", *in.A_sne[i]); });
+      m.A_sn[i] = *in.A_sne[i];
+    }
+  }
+  usable_tips(geometry, in, m);
   PairRating r;
   if (in.method == RatingMethod::iso6336 && in.quality) {
     RatingInput with_tolerances = in;

@@ -12,7 +12,10 @@ struct Mesh {
   bool internal = false;
   double m_n = 0, alpha_n = 0, alpha_t = 0, beta = 0, beta_b = 0, alpha_wt = 0;
   std::array<double, 2> d{}, d_b{}, d_a{}, d_f{}, d_w{}, x{}, A_sn{}, z_n{};
-  double u = 1, b = 0, h_fP = 1.25, rho_fP = 0.38;
+  std::array<double, 2> d_Na{};  ///< usable tip diameters: eps_alpha, Z_B/Z_D and Y_F use them (d_a unless given)
+  double u = 1, b = 0;  ///< b: the common face width
+  std::array<double, 2> b_F{};  ///< face width of each gear for its root stress (root_face_width)
+  std::array<double, 2> h_fP{1.25, 1.25}, rho_fP{0.38, 0.38};  ///< coefficients of each gear's tool
   double eps_alpha = 0, eps_beta = 0, eps_gamma = 0;
 };
 

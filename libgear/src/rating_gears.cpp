@@ -33,11 +33,11 @@ iso::ToothRoot tooth_root_of(const Mesh& m, const RatingInput& in, int i) {
   t.alpha_n = m.alpha_n;
   t.beta = m.beta;
   t.x_E = m.x[i] + (in.root_shift == RootShift::generating ? m.A_sn[i] / (2.0 * m.m_n * std::tan(m.alpha_n)) : 0.0);
-  t.h_fP = m.h_fP;
-  t.rho_fP = m.rho_fP;
-  t.s_pr = in.s_pr;
+  t.h_fP = m.h_fP[i];
+  t.rho_fP = m.rho_fP[i];
+  t.s_pr = in.s_pr_gear[i].value_or(in.s_pr);
   t.d = m.d[i];
-  t.d_a = m.d_a[i];
+  t.d_a = m.d_Na[i];
   t.eps_alpha = m.eps_alpha;
   try {
     return (i == 1 && m.internal) ? iso::internal_tooth_root(t) : iso::external_tooth_root(t);
@@ -50,8 +50,8 @@ iso::ToothRoot tooth_root_of(const Mesh& m, const RatingInput& in, int i) {
 
 void contact_of_gears(const Mesh& m, const RatingInput& in, PairRating& r) {
   const auto& f = in.factors;
-  const double M_1 = iso::single_pair_parameter(m.alpha_wt, m.d_a[0], m.d_b[0], m.z[0], m.d_a[1], m.d_b[1], m.z[1], m.eps_alpha);
-  const double M_2 = iso::single_pair_parameter(m.alpha_wt, m.d_a[1], m.d_b[1], m.z[1], m.d_a[0], m.d_b[0], m.z[0], m.eps_alpha);
+  const double M_1 = iso::single_pair_parameter(m.alpha_wt, m.d_Na[0], m.d_b[0], m.z[0], m.d_Na[1], m.d_b[1], m.z[1], m.eps_alpha);
+  const double M_2 = iso::single_pair_parameter(m.alpha_wt, m.d_Na[1], m.d_b[1], m.z[1], m.d_Na[0], m.d_b[0], m.z[0], m.eps_alpha);
   const double Z_BD[2] = {imposed_or(f, Factor::Z_B, iso::single_pair_contact_factor(M_1, m.eps_beta)),
                           imposed_or(f, Factor::Z_D, m.internal ? 1.0 : iso::single_pair_contact_factor(M_2, m.eps_beta))};
   const double rho_red = iso::relative_radius_of_curvature(m.d_b[0], m.d_b[1], m.alpha_wt, m.internal);
@@ -102,7 +102,7 @@ void root_of_gears(const Mesh& m, const RatingInput& in, PairRating& r) {
     g.Y_X = imposed_or(f, per_gear(Factor::Y_X1, i), iso::size_factor_F(mat.kind, m.m_n));
     g.Y_NT = imposed_or(f, per_gear(Factor::Y_NT1, i), iso::life_factor(iso::root_life_line(mat.kind, in.optimum_long_life), g.N_L));
     g.Y_M = imposed_or(f, per_gear(Factor::Y_M1, i), in.reversed_bending[i] ? 0.7 : 1.0);
-    g.sigma_F0 = iso::nominal_root_stress(r.F_t, m.b, m.m_n, g.Y_F, g.Y_S, g.Y_beta, g.Y_B, g.Y_DT);
+    g.sigma_F0 = iso::nominal_root_stress(r.F_t, m.b_F[i], m.m_n, g.Y_F, g.Y_S, g.Y_beta, g.Y_B, g.Y_DT);
     g.sigma_F = iso::root_stress(g.sigma_F0, r.K_gamma, r.K_A, r.K_v, r.K_Fbeta, r.K_Falpha);
     g.sigma_FG = iso::root_stress_limit(mat.sigma_Flim, g.Y_NT, g.Y_deltarelT, g.Y_RrelT, g.Y_X) * g.Y_M;
     g.sigma_FP = g.sigma_FG / in.S_Fmin;

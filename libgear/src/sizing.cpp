@@ -1,5 +1,7 @@
 #include <gearkit/gear/sizing.hpp>
 
+#include <gearkit/gear/inspection.hpp>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -84,6 +86,26 @@ Trial rate_at_width(GearPairInput geometry, const RatingInput& load, double b, l
   return t;
 }
 
+// The load with the upper thickness allowances of the grade by ISO/TR 10064-2 (inspection.hpp),
+// as `gearkit gear --quality` rates the teeth: the allowances do not depend on the face width.
+// nullopt when the inspection cannot find them (the pair is then not a candidate).
+std::optional<RatingInput> load_with_allowances(const GearPairInput& geometry, const RatingInput& load, double b) {
+  if (!load.quality || load.A_sne[0] || load.A_sne[1]) return load;
+  GearPairInput g = geometry;
+  g.face_width = b;
+  InspectionInput ii;
+  ii.grade = {*load.quality, *load.quality};
+  ii.edition = load.iso1328_edition;
+  try {
+    const InspectionResult by_grade = compute_inspection(g, compute_gear_pair(g), ii);
+    RatingInput with = load;
+    for (int i = 0; i < 2; ++i) with.A_sne[i] = by_grade.gear[i].allowances.A_sne;
+    return with;
+  } catch (const GeometryError&) {
+    return std::nullopt;
+  }
+}
+
 // The smallest whole-millimetre face width that meets both minimum safety factors, by bisection
 // (the safety factors grow with b); nullopt when even b_max does not.
 std::optional<SizingCandidate> smallest_width(const GearPairInput& geometry, const SizingInput& in, long long& evaluated) {
@@ -91,13 +113,15 @@ std::optional<SizingCandidate> smallest_width(const GearPairInput& geometry, con
   const double d2 = d1 * geometry.z2 / geometry.z1;
   int hi = static_cast<int>(std::floor(in.width_ratio_max * d1));
   if (hi < 1) return std::nullopt;
-  Trial best = rate_at_width(geometry, in.load, hi, evaluated);
+  const std::optional<RatingInput> load = load_with_allowances(geometry, in.load, hi);
+  if (!load) return std::nullopt;
+  Trial best = rate_at_width(geometry, *load, hi, evaluated);
   if (best.margin < 1.0) return std::nullopt;
   int lo = static_cast<int>(std::ceil(in.width_module_min * geometry.module)) - 1;  // fails, or below the smallest width
   if (lo >= hi) return std::nullopt;
   while (hi - lo > 1) {
     const int mid = (lo + hi) / 2;
-    const Trial t = rate_at_width(geometry, in.load, mid, evaluated);
+    const Trial t = rate_at_width(geometry, *load, mid, evaluated);
     if (t.margin >= 1.0) {
       hi = mid;
       best = t;

@@ -92,7 +92,7 @@ ToothFormSpec tooth_form_spec(const GearPairInput& input, const GearPairResult& 
   s.x = g.x;
   s.A_sn = g.A_sn;
   s.d_a = g.internal ? -g.d_a : g.d_a;
-  s.rack = Rack{g.alpha_n, input.h_aP, input.h_fP, input.rho_fP};
+  s.rack = tool_rack(input, i, g.alpha_n);
   return s;
 }
 

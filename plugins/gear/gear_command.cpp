@@ -15,7 +15,9 @@
 #include "gear_tolerance_options.hpp"
 #include "gear_tolerance_report.hpp"
 
+#include <gearkit/gear/accuracy.hpp>
 #include <gearkit/gear/gear_pair.hpp>
+#include <gearkit/gear/inspection.hpp>
 #include <gearkit/gear/rating.hpp>
 #include <gearkit/io/atomic_file.hpp>
 #include <gearkit/io/command_line.hpp>
@@ -38,11 +40,11 @@ constexpr std::string_view kUsage =
     "gearkit gear [PAIR.yaml] --z1 N --z2 N --module LEN [--ratio U] [--pressure-angle 20] [--helix-angle 0] "
     "[--x1 X --x2 X | --centre-distance LEN [--x1 X | --split balanced|proportional|min-shift [--undercut-limit "
     "iso|practical]]] [--radii] [--internal] [--transverse] "
-    "[--face-width LEN] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
+    "[--face-width LEN | --face-width1 LEN --face-width2 LEN [--face-offset LEN]] [--rack1 H_aP,H_fP,RHO_fP] [--rack2 ...] [--tip-diameter1 D] [--root-diameter1 D] [--backlash LEN | --allowance1 LEN --allowance2 LEN] [--centre-distance-deviation LEN] "
     "[--pin-diameter LEN] [--quality Q[,Q2] [--iso1328-edition 2013|1995]] "
     "[--thickness-allowances1 UP,LOW --thickness-allowances2 UP,LOW | --din3967 27cd[,26cd]] [--min-backlash LEN] "
     "[--centre-distance-tolerance jsN | --centre-distance-allowances UP,LOW] [--temperature T[,T_HOUSING] "
-    "[--expansion A1,A2,AH]] [--torque1 TORQUE | --power POWER --speed1 SPEED --material1 M --material2 M "
+    "[--expansion A1,A2,AH]] [--torque1 TORQUE | --torque2 TORQUE | --power POWER --speed1 SPEED --material1 M --material2 M "
     "[--method iso6336|agma|lewis-hertz] [--factor NAME=VALUE]...] [--format text|json|csv|md|html] [--svg FILE] [--dxf FILE] "
     "[--draw pair|gear1|gear2] [--tolerance LEN] [--cutter-teeth N] [--cutter-tip-radius LEN]\n       gearkit gear size --help";
 
@@ -97,12 +99,45 @@ Request read_request(const io::po::variables_map& vm) {
   }
   q.options = read_gear_options(vm);
   q.inspection = read_tolerance_options(vm);
+  // One allowance per gear: the inspection's (given, DIN 3967 or ISO/TR 10064-2) serves the root
+  // rating too, so a second value from --allowance or --backlash would contradict it.
+  if (q.inspection) {
+    const char* source = vm.count("thickness-allowances1") ? "thickness-allowances1" : vm.count("thickness-allowances2") ? "thickness-allowances2"
+                         : vm.count("din3967") ? "din3967" : "quality";
+    for (const char* key : {"allowance1", "allowance2", "backlash"})
+      if (vm.count(key))
+        io::fail_option(fmt::format("--{}", key), fmt::format("cannot be combined with --{}: its tooth thickness allowances are the ones of the "
+                                                              "inspection and of the root rating (give them with --thickness-allowances1/2)", source));
+  }
   if (rating_requested(vm)) {
     q.rating = read_rating_options(vm);
   } else if (any_rating_option(vm)) {
     io::fail_option("--torque1", "the load-capacity options need the load: give --torque1 or --power (with --speed1)");
   }
   return q;
+}
+
+// The root rating's generating shift x_E from the upper allowances A_sne of the inspection, so
+// that one allowance serves table, inspection and rating. A pair file with a grade and no
+// allowance1/2 gets those of ISO/TR 10064-2 for its grade, as `--quality` does.
+void root_allowances(const Request& q, const gg::GearPairResult& table, const gg::InspectionResult* inspection, gg::RatingInput& rating) {
+  if (inspection) {
+    for (int i = 0; i < 2; ++i) rating.A_sne[i] = inspection->gear[i].allowances.A_sne;
+    return;
+  }
+  if (!q.file || !rating.quality || q.options.input.A_sn1 != 0.0 || q.options.input.A_sn2 != 0.0) return;
+  const int grade = *rating.quality;
+  if (grade < gg::min_grade(rating.iso1328_edition) || grade > gg::max_grade(rating.iso1328_edition)) return;  // the rating names it
+  gg::InspectionInput ii;
+  ii.grade = {*rating.quality, *rating.quality};
+  ii.edition = rating.iso1328_edition;
+  try {
+    const gg::InspectionResult by_grade = gg::compute_inspection(q.options.input, table, ii);
+    for (int i = 0; i < 2; ++i) rating.A_sne[i] = by_grade.gear[i].allowances.A_sne;
+  } catch (const gg::GeometryError& e) {
+    io::fail_at(mark_for_field(*q.file, "quality"), fmt::format("the tooth thickness allowances of the grade (ISO/TR 10064-2), which the "
+                                                                "root rating uses, cannot be found: {}; give allowance1 and allowance2", e.what()));
+  }
 }
 
 [[noreturn]] void fail_field(const Request& q, const std::string& option, const std::string& field, const std::string& message) {
@@ -164,8 +199,10 @@ int run_gear_command(plugin::CommandContext& context) {
     add_ring_cutting_report(report, q.options.input, result, q.options);
   }
   if (q.rating) {
+    gg::RatingInput rating = *q.rating;
+    root_allowances(q, result, inspection ? &*inspection : nullptr, rating);
     try {
-      add_rating_report(report, *q.rating, gg::rate_gear_pair(q.options.input, result, *q.rating));
+      add_rating_report(report, rating, gg::rate_gear_pair(q.options.input, result, rating));
     } catch (const gg::RatingError& e) {
       fail_field(q, option_for_rating_field(e.field()), e.field(), e.what());
     }

@@ -22,9 +22,9 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 
 std::string mm(double v) { return std::isfinite(v) ? io::fixed(v, 3) : std::string("-"); }
 
-std::string helix(double beta) {
-  if (beta == 0.0) return "0° (spur)";
-  return fmt::format("{}° {}", io::fixed(std::fabs(beta) * kDeg, 3), beta > 0.0 ? "right" : "left");
+std::string helix(double beta, gg::HelixHand hand) {
+  if (hand == gg::HelixHand::spur) return "0° (spur)";
+  return fmt::format("{}° {}", io::fixed(std::fabs(beta) * kDeg, 3), gg::to_string(hand));
 }
 
 // Whether span() and pins() show a max / min pair (an inspection with an acceptance band).
@@ -89,10 +89,10 @@ io::TextTable gear_data_table(const gg::GearPairInput& in, const gg::GearPairRes
   add_row(t, which, "number of teeth", "z", [&](int i) { return std::to_string(g(i).z); });
   add_row(t, which, "normal module", "m_n", [&](int i) { return mm(g(i).m_n); });
   add_row(t, which, "normal pressure angle", "α_n", [&](int i) { return io::fixed(g(i).alpha_n * kDeg, 3) + "°"; });
-  // The table's beta is gear 1's; gear 2 of an external pair has the opposite hand, a ring the same.
-  add_row(t, which, "helix angle, hand", "β", [&](int i) { return helix(i == 1 && !in.internal ? -g(i).beta : g(i).beta); });
-  add_row(t, which, "basic rack h_aP*/h_fP*/ρ_fP*", "", [&](int) {
-    return fmt::format("{}/{}/{}", io::fixed(in.h_aP, 3), io::fixed(in.h_fP, 3), io::fixed(in.rho_fP, 3));
+  add_row(t, which, "helix angle, hand", "β", [&](int i) { return helix(g(i).beta, gg::helix_hand(in, i)); });
+  add_row(t, which, "basic rack h_aP*/h_fP*/ρ_fP*", "", [&](int i) {
+    const gg::Rack tool = gg::tool_rack(in, i, g(i).alpha_n);
+    return fmt::format("{}/{}/{}", io::fixed(tool.h_aP, 3), io::fixed(tool.h_fP, 3), io::fixed(tool.rho_fP, 3));
   });
   add_row(t, which, "profile shift coefficient", "x", [&](int i) { return io::fixed(g(i).x, 4); });
   add_row(t, which, "reference diameter", "d", [&](int i) { return mm(g(i).d); });

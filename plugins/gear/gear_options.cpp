@@ -98,7 +98,18 @@ void add_gear_options(io::po::options_description& desc) {
       ("addendum", po::value<std::string>()->value_name("COEF"), "rack addendum coefficient h_aP* (default 1)")
       ("dedendum", po::value<std::string>()->value_name("COEF"), "rack dedendum coefficient h_fP* (default 1.25)")
       ("root-radius", po::value<std::string>()->value_name("COEF"), "rack root radius coefficient rho_fP* (default 0.38)")
+      ("rack1", po::value<std::string>()->value_name("H_aP,H_fP,RHO_fP"),
+       "the tool of gear 1 when it differs from gear 2's: rack coefficients h_aP*,h_fP*,rho_fP* (default --addendum, "
+       "--dedendum, --root-radius)")
+      ("rack2", po::value<std::string>()->value_name("H_aP,H_fP,RHO_fP"), "the tool of gear 2 (as --rack1)")
+      ("tip-diameter1", po::value<std::string>()->value_name("LEN"), "tip diameter d_a1 as made (default from the rack) (bare number: mm)")
+      ("tip-diameter2", po::value<std::string>()->value_name("LEN"), "tip diameter d_a2 as made, a ring's its magnitude (bare number: mm)")
+      ("root-diameter1", po::value<std::string>()->value_name("LEN"), "root diameter d_f1 as made, a warning if the tool cuts another (bare number: mm)")
+      ("root-diameter2", po::value<std::string>()->value_name("LEN"), "root diameter d_f2 as made (bare number: mm)")
       ("face-width", po::value<std::string>()->value_name("LEN"), "face width b (overlap ratio) (bare number: mm)")
+      ("face-width1", po::value<std::string>()->value_name("LEN"), "face width of gear 1 when the widths differ (default --face-width) (bare number: mm)")
+      ("face-width2", po::value<std::string>()->value_name("LEN"), "face width of gear 2 (default --face-width) (bare number: mm)")
+      ("face-offset", po::value<std::string>()->value_name("LEN"), "axial offset of the middle of gear 2's face from gear 1's (default 0) (bare number: mm)")
       ("backlash", po::value<std::string>()->value_name("LEN"), "target normal backlash j_bn: sets equal thickness allowances (bare number: mm)")
       ("allowance1", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn1 (negative: thinner) (bare number: mm)")
       ("allowance2", po::value<std::string>()->value_name("LEN"), "normal tooth thickness allowance A_sn2 (negative: thinner) (bare number: mm)")
@@ -201,6 +212,36 @@ void read_rack(const io::po::variables_map& vm, gg::GearPairInput& in) {
     fail("dedendum", fmt::format("expected a coefficient >= the addendum coefficient {}, found {}", in.h_aP, in.h_fP));
   }
   if (!(in.rho_fP >= 0.0)) fail("root-radius", fmt::format("expected a coefficient >= 0, found {}", in.rho_fP));
+  for (int i = 0; i < 2; ++i) {
+    const char* key = i == 0 ? "rack1" : "rack2";
+    if (!given(vm, key)) continue;
+    const std::string text = text_of(vm, key);
+    double c[3] = {0, 0, 0};
+    std::size_t start = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t comma = text.find(',', start);
+      if ((k < 2) == (comma == std::string::npos)) fail(key, fmt::format("expected H_aP,H_fP,RHO_fP (e.g. 1,1.25,0.38), found {}", io::quote(text)));
+      const std::string part = text.substr(start, k < 2 ? comma - start : std::string::npos);
+      try {
+        c[k] = io::parse_quantity_si(part, io::Quantity::dimensionless, "");
+      } catch (const io::QuantityError& e) {
+        fail(key, e.what());
+      }
+      start = comma + 1;
+    }
+    if (!(c[0] > 0.0 && c[1] >= c[0] && c[2] >= 0.0)) {
+      fail(key, fmt::format("expected h_aP* > 0, h_fP* >= h_aP*, rho_fP* >= 0, found {}", io::quote(text)));
+    }
+    in.tool[i] = gg::Rack{in.pressure_angle, c[0], c[1], c[2]};
+  }
+  for (int i = 0; i < 2; ++i) {
+    for (const char* key : {i == 0 ? "tip-diameter1" : "tip-diameter2", i == 0 ? "root-diameter1" : "root-diameter2"}) {
+      if (!given(vm, key)) continue;
+      const double d = length_mm(vm, key);
+      if (!(d > 0.0)) fail(key, fmt::format("expected a diameter > 0 mm, found {} mm", d));
+      (std::string_view(key).starts_with("tip") ? in.d_a : in.d_f)[i] = d;
+    }
+  }
 }
 
 void read_shift(const io::po::variables_map& vm, gg::GearPairInput& in) {
@@ -242,6 +283,13 @@ void read_allowances(const io::po::variables_map& vm, gg::GearPairInput& in) {
     in.face_width = length_mm(vm, "face-width");
     if (!(in.face_width >= 0.0)) fail("face-width", fmt::format("expected a width >= 0 mm, found {} mm", in.face_width));
   }
+  for (int i = 0; i < 2; ++i) {
+    const char* key = i == 0 ? "face-width1" : "face-width2";
+    if (!given(vm, key)) continue;
+    in.face_widths[i] = length_mm(vm, key);
+    if (!(*in.face_widths[i] >= 0.0)) fail(key, fmt::format("expected a width >= 0 mm, found {} mm", *in.face_widths[i]));
+  }
+  if (given(vm, "face-offset")) in.face_offset = length_mm(vm, "face-offset");
   exclusive(vm, "allowance1", "backlash", "the allowances follow from the target backlash");
   exclusive(vm, "allowance2", "backlash", "the allowances follow from the target backlash");
   if (given(vm, "backlash")) {
@@ -309,7 +357,10 @@ std::string option_for_field(const std::string& field) {
       {"z1", "z1"}, {"z2", "z2"}, {"module", "module"}, {"pressure_angle", "pressure-angle"},
       {"helix_angle", "helix-angle"}, {"face_width", "face-width"}, {"x1", "x1"}, {"x2", "x2"},
       {"centre_distance", "centre-distance"}, {"backlash_target", "backlash"}, {"A_a", "centre-distance-deviation"},
-      {"pin_diameter1", "pin-diameter1"}, {"pin_diameter2", "pin-diameter2"}, {"rack", "root-radius"}};
+      {"pin_diameter1", "pin-diameter1"}, {"pin_diameter2", "pin-diameter2"}, {"rack", "root-radius"},
+      {"tool1", "rack1"}, {"tool2", "rack2"}, {"d_a1", "tip-diameter1"}, {"d_a2", "tip-diameter2"},
+      {"d_f1", "root-diameter1"}, {"d_f2", "root-diameter2"}, {"face_width1", "face-width1"}, {"face_width2", "face-width2"},
+      {"face_offset", "face-offset"}};
   const auto it = options.find(field);
   return it == options.end() ? field : it->second;
 }

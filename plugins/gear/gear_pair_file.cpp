@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <tuple>
 #include <numbers>
 
 namespace gearkit::plugins::gear {
@@ -23,6 +24,27 @@ using io::MapReader;
 using io::Quantity;
 
 double mm(MapReader& r, const char* key, double default_mm) { return r.quantity_or(key, Quantity::length, "mm", default_mm / 1000.0) * 1000.0; }
+
+// Per-gear tools (rack1:, rack2: as rack:) and the tip and root diameters as made.
+void read_tools_and_tips(MapReader& r, PairFile& f) {
+  gg::GearPairInput& g = f.geometry;
+  for (int i = 0; i < 2; ++i) {
+    const char* key = i == 0 ? "rack1" : "rack2";
+    if (auto rack = r.optional_node(key)) {
+      MapReader k(*rack, r.file(), key);
+      gg::Rack tool{g.pressure_angle, k.optional_number("addendum").value_or(g.h_aP), k.optional_number("dedendum").value_or(g.h_fP),
+                    k.optional_number("root_radius").value_or(g.rho_fP)};
+      g.tool[i] = tool;
+      f.marks[i == 0 ? "tool1" : "tool2"] = k.mark();
+      k.finish();
+    }
+    const std::string n = std::to_string(i + 1);
+    for (const auto& [name, field, target] : {std::tuple{"tip_diameter" + n, "d_a" + n, &g.d_a}, std::tuple{"root_diameter" + n, "d_f" + n, &g.d_f}}) {
+      if (auto d = r.optional_quantity(name.c_str(), Quantity::length, "mm")) (*target)[i] = *d * 1000.0;
+      f.marks[field] = r.mark(name.c_str());
+    }
+  }
+}
 
 void read_geometry(MapReader& r, PairFile& f) {
   gg::GearPairInput& g = f.geometry;
@@ -47,6 +69,13 @@ void read_geometry(MapReader& r, PairFile& f) {
   const std::string split = r.choice("split", {"balanced", "proportional", "user"}, r.has("x1") ? "user" : "balanced");
   g.split = split == "user" ? gg::ShiftSplit::user_x1 : split == "proportional" ? gg::ShiftSplit::proportional : gg::ShiftSplit::balanced_sliding;
   g.face_width = mm(r, "face_width", 0.0);
+  for (int i = 0; i < 2; ++i) {
+    const char* key = i == 0 ? "face_width1" : "face_width2";
+    if (r.has(key)) g.face_widths[i] = mm(r, key, 0.0);
+    f.marks[key] = r.mark(key);
+  }
+  g.face_offset = mm(r, "face_offset", 0.0);
+  f.marks["face_offset"] = r.mark("face_offset");
   g.A_sn1 = mm(r, "allowance1", 0.0);
   g.A_sn2 = mm(r, "allowance2", 0.0);
   if (auto rack = r.optional_node("rack")) {
@@ -57,6 +86,7 @@ void read_geometry(MapReader& r, PairFile& f) {
     f.marks["rack"] = k.mark();
     k.finish();
   }
+  read_tools_and_tips(r, f);
   for (const char* key : {"module", "pressure_angle", "helix_angle", "centre_distance", "x1", "x2", "face_width"}) f.marks[key] = r.mark(key);
   f.marks["A_sn1"] = r.mark("allowance1");
   f.marks["A_sn2"] = r.mark("allowance2");
@@ -101,11 +131,23 @@ void read_load(MapReader& load, gg::RatingInput& r, PairFile& f) {
   const std::string method = load.choice("method", {"iso6336", "agma", "lewis-hertz"}, "iso6336");
   r.method = method == "agma" ? gg::RatingMethod::agma : method == "lewis-hertz" ? gg::RatingMethod::lewis_hertz : gg::RatingMethod::iso6336;
   r.n_1 = load.quantity("speed1", Quantity::angular_velocity, "rpm") * kRpm;
-  if (load.has("torque1") == load.has("power")) io::fail_at(load.mark(), "expected exactly one of 'torque1' and 'power' in load");
-  r.T_1 = load.has("torque1") ? load.quantity("torque1", Quantity::torque, "N*m")
-                              : load.quantity("power", Quantity::power, "kW") / (r.n_1 / kRpm);
+  if (int(load.has("torque1")) + int(load.has("torque2")) + int(load.has("power")) != 1) {
+    io::fail_at(load.mark(), "expected exactly one of 'torque1', 'torque2' and 'power' in load");
+  }
+  if (load.has("torque2")) {
+    r.T_2 = load.quantity("torque2", Quantity::torque, "N*m");
+  } else {
+    r.T_1 = load.has("torque1") ? load.quantity("torque1", Quantity::torque, "N*m")
+                                : load.quantity("power", Quantity::power, "kW") / (r.n_1 / kRpm);
+  }
   r.K_A = load.optional_number("application_factor").value_or(1.0);
   r.life_h = read_life(load, r.life_h);
+  if (load.has("life_cycles")) {
+    if (load.has("life")) io::fail_at(load.mark("life_cycles"), "give 'life' (hours) or 'life_cycles', not both");
+    r.N_L1 = load.number("life_cycles");
+  }
+  f.marks["N_L1"] = load.mark("life_cycles");
+  f.marks["T_2"] = load.mark("torque2");
   f.marks["T_1"] = load.mark(load.has("torque1") ? "torque1" : "power");
   f.marks["n_1"] = load.mark("speed1");
   f.marks["K_A"] = load.mark("application_factor");

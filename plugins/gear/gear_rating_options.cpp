@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -74,24 +75,73 @@ Enum choice(const io::po::variables_map& vm, const char* key, const std::map<std
   return it->second;
 }
 
-void read_load(const io::po::variables_map& vm, gg::RatingInput& r) {
-  if (given(vm, "torque1") && given(vm, "power")) fail("power", "cannot be combined with --torque1: give one of them");
-  if (!given(vm, "speed1")) fail(given(vm, "power") ? "power" : "torque1", "the rating needs --speed1 (pinion speed, rpm)");
-  r.n_1 = quantity(vm, "speed1", io::Quantity::angular_velocity, "") * kRpm;
-  if (!(r.n_1 > 0.0)) fail("speed1", fmt::format("expected a speed > 0, found {}", text_of(vm, "speed1").substr(0, 60)));
-  if (given(vm, "torque1")) {
-    r.T_1 = quantity(vm, "torque1", io::Quantity::torque, "");
+// One value for both gears or two separated by a comma ("0.5" or "0.4,0.8"), each >= 0 (> 0
+// unless `zero_ok`): plain numbers, or quantities `q` whose bare numbers and result are in `unit`.
+std::array<double, 2> per_gear(const io::po::variables_map& vm, const char* key, bool zero_ok,
+                               io::Quantity q = io::Quantity::dimensionless, const char* unit = "") {
+  const std::string s = text_of(vm, key);
+  const auto comma = s.find(',');
+  const std::string parts[2] = {s.substr(0, comma), comma == std::string::npos ? s : s.substr(comma + 1)};
+  std::array<double, 2> v{};
+  if (parts[1].find(',') != std::string::npos) {
+    fail(key, fmt::format("expected one number or two (gear 1,gear 2), found {}", s.substr(0, 60)));
+  }
+  for (int i = 0; i < 2; ++i) {
+    try {
+      v[i] = io::parse_option_quantity_si(parts[i], q, unit) / (*unit ? io::unit_factor_si(unit, q) : 1.0);
+    } catch (const io::QuantityError& e) {
+      fail(key, e.what());
+    }
+    if (!(std::isfinite(v[i]) && (v[i] > 0.0 || (zero_ok && v[i] == 0.0)))) {
+      fail(key, fmt::format("expected one number {} 0 or two (gear 1,gear 2), found {}", zero_ok ? ">=" : ">", s.substr(0, 60)));
+    }
+  }
+  return v;
+}
+
+void read_torque(const io::po::variables_map& vm, gg::RatingInput& r) {
+  if (given(vm, "torque1") && given(vm, "torque2")) fail("torque2", "cannot be combined with --torque1: give one of them");
+  if (given(vm, "torque2") && given(vm, "power")) fail("power", "cannot be combined with --torque2: give one of them");
+  if (given(vm, "torque2")) {
+    r.T_2 = quantity(vm, "torque2", io::Quantity::torque, "N*m");
+    if (!(r.T_2 > 0.0)) fail("torque2", fmt::format("expected a torque > 0, found {}", text_of(vm, "torque2").substr(0, 60)));
+  } else if (given(vm, "torque1")) {
+    r.T_1 = quantity(vm, "torque1", io::Quantity::torque, "N*m");
     if (!(r.T_1 > 0.0)) fail("torque1", fmt::format("expected a torque > 0, found {}", text_of(vm, "torque1").substr(0, 60)));
   } else {
     const double P = quantity(vm, "power", io::Quantity::power, "");
     if (!(P > 0.0)) fail("power", fmt::format("expected a power > 0, found {}", text_of(vm, "power").substr(0, 60)));
     r.T_1 = P / (r.n_1 / kRpm);
   }
+}
+
+void read_load(const io::po::variables_map& vm, gg::RatingInput& r) {
+  if (given(vm, "torque1") && given(vm, "power")) fail("power", "cannot be combined with --torque1: give one of them");
+  if (!given(vm, "speed1")) fail(given(vm, "power") ? "power" : given(vm, "torque2") ? "torque2" : "torque1", "the rating needs --speed1 (pinion speed, rpm)");
+  r.n_1 = quantity(vm, "speed1", io::Quantity::angular_velocity, "rpm") * kRpm;
+  if (!(r.n_1 > 0.0)) fail("speed1", fmt::format("expected a speed > 0, found {}", text_of(vm, "speed1").substr(0, 60)));
+  read_torque(vm, r);
   if (given(vm, "application-factor")) r.K_A = positive(vm, "application-factor");
   if (r.K_A < 1.0) fail("application-factor", fmt::format("expected K_A >= 1, found {}", r.K_A));
   if (given(vm, "life")) {
     r.life_h = quantity(vm, "life", io::Quantity::time, "h") / 3600.0;
     if (!(r.life_h > 0.0)) fail("life", fmt::format("expected a life > 0 h, found {}", text_of(vm, "life").substr(0, 60)));
+  }
+  if (given(vm, "life-cycles")) {
+    if (given(vm, "life")) fail("life-cycles", "cannot be combined with --life: give the life in hours or in load cycles");
+    r.N_L1 = positive(vm, "life-cycles");
+  }
+  r.reversed_bending = {vm["reversed-bending1"].as<bool>(), vm["reversed-bending2"].as<bool>()};
+}
+
+// Usable tip diameters and tip chamfers (the rating's tips).
+void read_tips(const io::po::variables_map& vm, gg::RatingInput& r) {
+  for (int i = 0; i < 2; ++i) {
+    const char* usable = i == 0 ? "usable-tip-diameter1" : "usable-tip-diameter2";
+    const char* chamfer = i == 0 ? "tip-chamfer1" : "tip-chamfer2";
+    if (given(vm, usable) && given(vm, chamfer)) fail(chamfer, fmt::format("cannot be combined with --{}: give one of them", usable));
+    if (given(vm, usable)) r.d_Na[i] = quantity(vm, usable, io::Quantity::length, "mm") * 1000.0;
+    if (given(vm, chamfer)) r.h_K[i] = quantity(vm, chamfer, io::Quantity::length, "mm") * 1000.0;
   }
 }
 
@@ -156,19 +206,19 @@ void read_face_load_options(const io::po::variables_map& vm, gg::RatingInput& r)
 void read_surface_and_lubrication(const io::po::variables_map& vm, gg::RatingInput& r) {
   if (given(vm, "oil-viscosity")) r.nu_40 = positive(vm, "oil-viscosity");
   if (given(vm, "flank-roughness")) {
-    const double R_a = length_in(vm, "flank-roughness", "um");
-    r.R_z_flank = {6.0 * R_a, 6.0 * R_a};
+    const auto R_a = per_gear(vm, "flank-roughness", false, io::Quantity::length, "um");
+    r.R_z_flank = {6.0 * R_a[0], 6.0 * R_a[1]};
   }
   if (given(vm, "flank-rz")) {
     if (given(vm, "flank-roughness")) fail("flank-rz", "cannot be combined with --flank-roughness (R_a): give one of them");
-    const double R_z = length_in(vm, "flank-rz", "um");
-    r.R_z_flank = {R_z, R_z};
+    r.R_z_flank = per_gear(vm, "flank-rz", false, io::Quantity::length, "um");
   }
-  if (given(vm, "protuberance")) r.s_pr = positive(vm, "protuberance", true);
-  if (given(vm, "root-roughness")) {
-    const double R_z = length_in(vm, "root-roughness", "um", true);
-    r.R_z_root = {R_z, R_z};
+  if (given(vm, "protuberance")) {
+    const auto s_pr = per_gear(vm, "protuberance", true);
+    r.s_pr = s_pr[0];
+    if (s_pr[1] != s_pr[0]) r.s_pr_gear = {s_pr[0], s_pr[1]};
   }
+  if (given(vm, "root-roughness")) r.R_z_root = per_gear(vm, "root-roughness", true, io::Quantity::length, "um");
   if (given(vm, "rim1")) r.s_R[0] = length_in(vm, "rim1", "mm");
   if (given(vm, "rim2")) r.s_R[1] = length_in(vm, "rim2", "mm");
   if (given(vm, "min-safety-pitting")) r.S_Hmin = positive(vm, "min-safety-pitting");
@@ -218,6 +268,7 @@ void add_rating_options(io::po::options_description& desc) {
   auto text = [] { return po::value<std::string>(); };
   desc.add_options()
       ("torque1", text()->value_name("TORQUE"), "rating: torque on gear 1 (unit required, e.g. 9kN*m)")
+      ("torque2", text()->value_name("TORQUE"), "rating: torque on gear 2, instead of --torque1 (T_1 = T_2 z1/z2, mesh efficiency 1) (unit required, e.g. 9kN*m)")
       ("power", text()->value_name("POWER"), "rating: transmitted power, instead of --torque1 (unit required, e.g. 7.5kW)")
       ("speed1", text()->value_name("SPEED"), "rating: speed of gear 1 (unit required, e.g. 1450rpm)")
       ("material1", text()->value_name("NAME"), "rating: material of gear 1 (18CrNiMo7-6, 42CrMo4, ..., or CLASS:GRADE:HARDNESS)")
@@ -225,11 +276,18 @@ void add_rating_options(io::po::options_description& desc) {
       ("method", text()->value_name("iso6336|agma|lewis-hertz"), "rating method (default iso6336)")
       ("application-factor", text()->value_name("K_A"), "application factor K_A (default 1)")
       ("life", text()->value_name("TIME"), "required life (default 20000 h) (bare number: h)")
+      ("life-cycles", text()->value_name("N"), "required life as load cycles of gear 1 (instead of --life)")
+      ("reversed-bending1", po::bool_switch(), "gear 1 is loaded on both flanks (idler, planet): fully reversed bending, Y_M = 0.7")
+      ("reversed-bending2", po::bool_switch(), "gear 2 is loaded on both flanks: Y_M = 0.7")
+      ("usable-tip-diameter1", text()->value_name("LEN"), "usable tip diameter d_Na1 (end of the involute below a chamfer) (bare number: mm)")
+      ("usable-tip-diameter2", text()->value_name("LEN"), "usable tip diameter d_Na2 (bare number: mm)")
+      ("tip-chamfer1", text()->value_name("LEN"), "radial tip chamfer h_K1, d_Na1 = d_a1 - 2 h_K1 (bare number: mm)")
+      ("tip-chamfer2", text()->value_name("LEN"), "radial tip chamfer h_K2 (bare number: mm)")
       ("oil-viscosity", text()->value_name("NU40"), "kinematic viscosity at 40 C, a plain number (default 220) (bare number: mm^2/s)")
-      ("flank-roughness", text()->value_name("LEN"), "flank roughness R_a (default 0.5 um: R_z = 3 um) (bare number: um)")
-      ("flank-rz", text()->value_name("LEN"), "flank roughness R_z, instead of --flank-roughness (bare number: um)")
-      ("root-roughness", text()->value_name("LEN"), "root roughness R_z (default 10 um) (bare number: um)")
-      ("protuberance", text()->value_name("COEF"), "residual protuberance of the tool s_pr / m_n (ISO 6336-3 Eq. 19; default 0)")
+      ("flank-roughness", text()->value_name("LEN[,LEN2]"), "flank roughness R_a of both gears or gear 1,gear 2 (default 0.5 um: R_z = 3 um) (bare number: um)")
+      ("flank-rz", text()->value_name("LEN[,LEN2]"), "flank roughness R_z, instead of --flank-roughness (bare number: um)")
+      ("root-roughness", text()->value_name("LEN[,LEN2]"), "root roughness R_z of both gears or gear 1,gear 2 (default 10 um) (bare number: um)")
+      ("protuberance", text()->value_name("COEF[,COEF2]"), "residual protuberance of the tool s_pr / m_n = (p_r - q)/m_n, both gears or gear 1,gear 2 (ISO 6336-3 Eq. 19; default 0)")
       ("f-pb", text()->value_name("LEN"), "transverse base pitch deviation f_pb (default from --quality) (bare number: um)")
       ("f-falpha", text()->value_name("LEN"), "profile form deviation f_falpha (default from --quality) (bare number: um)")
       ("F-betax", text()->value_name("LEN"), "initial equivalent misalignment F_betax, instead of f_ma, f_sh (bare number: um)")
@@ -263,17 +321,19 @@ void add_rating_options(io::po::options_description& desc) {
   }
 }
 
-bool rating_requested(const io::po::variables_map& vm) { return given(vm, "torque1") || given(vm, "power"); }
+bool rating_requested(const io::po::variables_map& vm) { return given(vm, "torque1") || given(vm, "torque2") || given(vm, "power"); }
 
 bool any_rating_option(const io::po::variables_map& vm) {
   for (const char* key : {"torque1", "power", "speed1", "material1", "material2", "method", "application-factor", "life",
                           "oil-viscosity", "flank-roughness", "flank-rz", "protuberance", "root-roughness", "f-pb", "f-falpha", "F-betax", "f-ma", "f-sh",
                           "tip-relief", "shaft-span", "pinion-offset", "shaft-diameter", "shaft-arrangement", "stiffening", "torque-share",
                           "helix-modification", "rim1", "rim2", "min-safety-pitting", "min-safety-bending", "root-shift", "agma-quality",
-                          "reliability", "mounting", "lewis-profile", "factor"}) {
+                          "reliability", "mounting", "lewis-profile", "factor", "torque2", "life-cycles", "usable-tip-diameter1",
+                          "usable-tip-diameter2", "tip-chamfer1", "tip-chamfer2"}) {
     if (given(vm, key)) return true;
   }
-  return vm["limited-pitting"].as<bool>() || vm["optimum-long-life"].as<bool>() || vm["crowned"].as<bool>();
+  return vm["limited-pitting"].as<bool>() || vm["optimum-long-life"].as<bool>() || vm["crowned"].as<bool>() ||
+         vm["reversed-bending1"].as<bool>() || vm["reversed-bending2"].as<bool>();
 }
 
 gg::RatingInput read_rating_options(const io::po::variables_map& vm) {
@@ -284,6 +344,7 @@ gg::RatingInput read_rating_options(const io::po::variables_map& vm) {
   read_face_load_options(vm, r);
   read_surface_and_lubrication(vm, r);
   read_method_options(vm, r);
+  read_tips(vm, r);
   return r;
 }
 
@@ -312,7 +373,9 @@ std::string option_for_rating_field(const std::string& field) {
       {"material1", "material1"}, {"material2", "material2"}, {"f_pb", "f-pb"}, {"f_falpha", "f-falpha"},
       {"f_ma", "f-ma"}, {"F_betax", "F-betax"}, {"face_width", "face-width"}, {"Q_v", "agma-quality"},
       {"reliability", "reliability"}, {"factor", "factor"}, {"R_z_flank", "flank-roughness"}, {"R_z_root", "root-roughness"},
-      {"s_R", "rim1"}, {"face_load", "shaft-span"}, {"tooth_root", "x1"}, {"spectrum", "life"}};
+      {"s_R", "rim1"}, {"face_load", "shaft-span"}, {"tooth_root", "x1"}, {"spectrum", "life"}, {"T_2", "torque2"}, {"N_L1", "life-cycles"},
+      {"d_Na1", "usable-tip-diameter1"}, {"d_Na2", "usable-tip-diameter2"}, {"h_K1", "tip-chamfer1"}, {"h_K2", "tip-chamfer2"},
+      {"s_pr", "protuberance"}, {"A_sne", "thickness-allowances1"}};
   const auto it = options.find(field);
   return it == options.end() ? field : it->second;
 }

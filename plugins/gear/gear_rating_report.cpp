@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace gearkit::plugins::gear {
 
@@ -218,8 +219,17 @@ void add_rating_report(io::Report& report, const gg::RatingInput& in, const gg::
                                                     gg::to_string(in.iso1328_edition), *in.quality)
                                       : std::string("Accuracy: no ISO 1328 grade given (deviations as given; deep tooth factor Y_DT = 1)."));
   }
+  if (r.method == gg::RatingMethod::iso6336 && in.root_shift == gg::RootShift::generating && (in.A_sne[0] || in.A_sne[1])) {
+    auto mm = [](const std::optional<double>& A) { return A ? fmt::format("{:.4f}", *A) : std::string("table"); };
+    report.notes.push_back(fmt::format("Tooth root (Y_F, Y_S): generating shift x_E = x + A_sne/(2 m_n tan alpha_n) from the upper "
+                                       "tooth thickness allowances A_sne = {} / {} mm of the inspection.", mm(in.A_sne[0]), mm(in.A_sne[1])));
+  }
   for (const auto& w : r.warnings) report.warnings.push_back(w);
   report.json["rating"] = rating_json(in, r);
+  if (in.A_sne[0] || in.A_sne[1]) {
+    for (int i = 0; i < 2; ++i) report.json["rating"]["gears"][static_cast<std::size_t>(i)]["A_sne_mm"] = in.A_sne[i] ? nlohmann::json(*in.A_sne[i]) : nlohmann::json(nullptr);
+  }
+  if (in.T_2 > 0.0) report.json["rating"]["T_2_Nm"] = in.T_2;
 }
 
 }  // namespace gearkit::plugins::gear

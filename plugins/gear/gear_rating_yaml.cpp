@@ -97,6 +97,29 @@ void read_face_load(MapReader& r, gg::FaceLoadInput& f) {
   r.finish();
 }
 
+// Keys of one gear (suffix 1 or 2): roughness, tool protuberance, fully reversed bending, usable tip.
+void read_per_gear_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, io::SourceMark>& marks) {
+  auto um = [](MapReader& m, const std::string& key) { return m.quantity(key, Quantity::length, "um") * 1e6; };
+  for (int i = 0; i < 2; ++i) {
+    const std::string n = std::to_string(i + 1);
+    const std::string ra = "flank_roughness" + n, rz = "flank_rz" + n, root = "root_roughness" + n, s_pr = "protuberance" + n;
+    if (r.has(ra) && r.has(rz)) io::fail_at(r.mark(rz), fmt::format("give {} (R_a) or {}, not both", ra, rz));
+    if (r.has(ra)) in.R_z_flank[i] = 6.0 * um(r, ra);
+    if (r.has(rz)) in.R_z_flank[i] = um(r, rz);
+    if (r.has(root)) in.R_z_root[i] = um(r, root);
+    if (r.has(s_pr)) in.s_pr_gear[i] = r.number(s_pr);
+    in.reversed_bending[i] = r.boolean_or("reversed_bending" + n, in.reversed_bending[i]);
+    const std::string usable = "usable_tip_diameter" + n, chamfer = "tip_chamfer" + n;
+    if (r.has(usable)) in.d_Na[i] = r.quantity(usable, Quantity::length, "mm") * 1000.0;
+    if (r.has(chamfer)) in.h_K[i] = r.quantity(chamfer, Quantity::length, "mm") * 1000.0;
+    marks["d_Na" + n] = r.mark(usable);
+    marks["h_K" + n] = r.mark(chamfer);
+  }
+  if (r.has("flank_roughness1")) marks["R_z_flank"] = r.mark("flank_roughness1");
+  if (r.has("root_roughness1")) marks["R_z_root"] = r.mark("root_roughness1");
+  if (r.has("protuberance1")) marks["s_pr"] = r.mark("protuberance1");
+}
+
 void read_rating_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, io::SourceMark>& marks) {
   auto um = [](MapReader& m, const char* key) { return m.quantity(key, Quantity::length, "um") * 1e6; };
   read_accuracy(r, in);
@@ -107,6 +130,7 @@ void read_rating_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, i
   if (r.has("flank_rz")) in.R_z_flank.fill(um(r, "flank_rz"));
   in.s_pr = r.optional_number("protuberance").value_or(in.s_pr);
   if (r.has("root_roughness")) in.R_z_root.fill(um(r, "root_roughness"));
+  read_per_gear_keys(r, in, marks);
   if (auto d = r.optional_node("deviations")) {
     MapReader dv(*d, r.file(), "deviations");
     for (auto [key, field] : {std::pair{"f_pb", &gg::RatingInput::f_pb}, {"f_falpha", &gg::RatingInput::f_falpha},

@@ -38,7 +38,7 @@ void size_rows(io::Table& t, const gg::GearPairResult& r, bool radii) {
   row("root diameter d_f [mm]", "root radius r_f [mm]", &gg::GearResult::d_f);
 }
 
-void gear_rows(io::Table& t, const gg::GearPairResult& r, bool helical, bool allowances, bool radii) {
+void gear_rows(io::Table& t, const gg::GearPairInput& in, const gg::GearPairResult& r, bool helical, bool allowances, bool radii) {
   const auto& g1 = r.gear[0];
   const auto& g2 = r.gear[1];
   auto row = [&t](std::string name, std::string a, std::string b) { t.add_row({std::move(name), std::move(a), std::move(b)}); };
@@ -52,6 +52,7 @@ void gear_rows(io::Table& t, const gg::GearPairResult& r, bool helical, bool all
   if (helical) {
     row("transverse pressure angle alpha_t [deg]", num(g1.alpha_t * kDeg), num(g2.alpha_t * kDeg));
     row("helix angle beta [deg]", num(g1.beta * kDeg), num(g2.beta * kDeg));
+    row("helix hand (beta > 0: gear 1 right)", gg::to_string(gg::helix_hand(in, 0)), gg::to_string(gg::helix_hand(in, 1)));
     row("base helix angle beta_b [deg]", num(g1.beta_b * kDeg), num(g2.beta_b * kDeg));
   }
   both("profile shift coefficient x", &gg::GearResult::x);
@@ -193,7 +194,7 @@ void undercut_note(io::Report& report, const gg::GearPairInput& in, const gg::Ge
         "involute then starts at d_Ff = {:.3f} mm: an involute-interference warning for the mating tip is the same "
         "undercut seen from the mesh (generation removed the flank the tip would cut into, so the teeth do not collide, "
         "but the contact below d_Ff is not on the involute).",
-        i + 1, g.x_min, in.rho_fP, g.x_min_practical, g.x, g.d_Ff));
+        i + 1, g.x_min, gg::tool_rack(in, i, g.alpha_n).rho_fP, g.x_min_practical, g.x, g.d_Ff));
   }
 }
 
@@ -207,7 +208,7 @@ io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r,
   report.title = fmt::format("Gear table: {} pair, z1 = {}, z2 = {}, m_n = {:g} mm", kind(in), r.gear[0].z, r.gear[1].z,
                              r.gear[0].m_n);
   io::Table gears{"Gears", {"quantity", "gear 1", in.internal ? "gear 2 (ring)" : "gear 2"}, {}};
-  gear_rows(gears, r, helical, allowances, radii);
+  gear_rows(gears, in, r, helical, allowances, radii);
   io::Table pair{"Pair", {"quantity", "value"}, {}};
   pair_rows(pair, r, helical, backlash);
   report.tables.push_back(std::move(gears));
@@ -223,6 +224,7 @@ io::Report gear_report(const gg::GearPairInput& in, const gg::GearPairResult& r,
   report.json["pair"] = pair_json(r.pair, in.internal);
   report.json["pair"]["undercut_limit"] = gg::to_string(in.undercut_limit);
   report.json["gears"] = {gear_json(r.gear[0]), gear_json(r.gear[1])};
+  for (int i = 0; i < 2; ++i) report.json["gears"][static_cast<std::size_t>(i)]["helix_hand"] = gg::to_string(gg::helix_hand(in, i));
   if (radii)
     for (std::size_t i = 0; i < 2; ++i) {
       const gg::GearResult& g = r.gear[i];

@@ -214,3 +214,26 @@ TEST(GearCommand, WarningsDoNotChangeTheStatusUnlessStrict) {
   EXPECT_EQ(run("--z1 8 --z2 30 --module 2").status, 0);
   EXPECT_EQ(run("--z1 8 --z2 30 --module 2 --strict").status, 3);
 }
+
+// The hand of each gear in every format: --helix-angle is gear 1's, > 0 right hand; an external
+// mate has the other hand, a ring the same (the drawing's convention, gear_drawing.cpp).
+TEST(GearCommand, HelixHandOfEachGearInEveryReport) {
+  const std::string pair = "--z1 20 --z2 40 --module 3 --helix-angle ";
+  const CliRun text = run(pair + "15");
+  ASSERT_EQ(text.status, 0) << text.err;
+  const auto row = text.out.find("helix hand");
+  ASSERT_NE(row, std::string::npos);
+  const std::string line = text.out.substr(row, text.out.find('\n', row) - row);
+  EXPECT_LT(line.find("right"), line.find("left")) << line;
+  for (const char* format : {"csv --table all", "md", "html"}) {
+    const CliRun r = run(pair + "15 --format " + format);
+    EXPECT_NE(r.out.find("helix hand"), std::string::npos) << format;
+  }
+  const auto j = nlohmann::json::parse(run(pair + "-15 --format json").out);
+  EXPECT_EQ(j["gears"][0]["helix_hand"], "left");
+  EXPECT_EQ(j["gears"][1]["helix_hand"], "right");
+  const auto ring = nlohmann::json::parse(run("--z1 20 --z2 60 --module 3 --internal --helix-angle 15 --format json").out);
+  EXPECT_EQ(ring["gears"][1]["helix_hand"], "right");
+  const auto spur = nlohmann::json::parse(run("--z1 20 --z2 40 --module 3 --format json").out);
+  EXPECT_EQ(spur["gears"][0]["helix_hand"], "spur");
+}

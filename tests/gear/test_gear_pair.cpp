@@ -394,3 +394,53 @@ TEST(GearPairErrors, FieldsAreNamed) {
   in = pair(12, 24, 3.0, -1.0, -1.0);
   EXPECT_EQ(field_of(in), "x2");
 }
+
+TEST(GearPairTips, ExplicitTipAndRootDiameters) {
+  // A spur pair z = 20/40, m = 3, x = 0: d_a = 66 / 126, d_f = 52.5 / 112.5 by the rack.
+  gg::GearPairInput in;
+  in.z1 = 20;
+  in.z2 = 40;
+  in.module = 3.0;
+  const auto nominal = gg::compute_gear_pair(in);
+  EXPECT_NEAR(nominal.gear[0].d_a, 66.0, 1e-9);
+  in.d_a = {65.0, std::nullopt};  // tip turned down by 0.5 mm on the radius
+  in.d_f = {std::nullopt, 112.0};  // not what the rack cuts: a warning
+  const auto r = gg::compute_gear_pair(in);
+  EXPECT_DOUBLE_EQ(r.gear[0].d_a, 65.0);
+  EXPECT_DOUBLE_EQ(r.gear[1].d_f, 112.0);
+  // eps_alpha = (sqrt(r_a1^2 - r_b1^2) + sqrt(r_a2^2 - r_b2^2) - a sin alpha) / (pi m cos alpha), a = 90.
+  const double c = std::cos(20.0 * kDeg), s = std::sin(20.0 * kDeg);
+  const double rb1 = 30.0 * c, rb2 = 60.0 * c;
+  const double eps = (std::sqrt(32.5 * 32.5 - rb1 * rb1) + std::sqrt(63.0 * 63.0 - rb2 * rb2) - 90.0 * s) / (std::numbers::pi * 3.0 * c);
+  EXPECT_NEAR(r.pair.eps_alpha, eps, 1e-9);
+  EXPECT_NEAR(r.pair.c1, 90.0 - 32.5 - 56.0, 1e-9);  // c = a - r_a1 - r_f2
+  const bool warned = std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) {
+    return w.find("gear 2: root diameter d_f = 112.0000 mm given, the tool") != std::string::npos;
+  });
+  EXPECT_TRUE(warned);
+  in.d_a = {-1.0, std::nullopt};
+  try {
+    gg::compute_gear_pair(in);
+    FAIL() << "negative d_a accepted";
+  } catch (const gg::GeometryError& e) {
+    EXPECT_EQ(e.field(), "d_a1");
+  }
+}
+
+TEST(GearPairTips, HelixHandOfEachGear) {
+  // helix_angle is gear 1's, > 0 right hand; the mate of an external pair has the other hand,
+  // a ring the same (ISO 21771 4.3: a parallel-axis external pair meshes with opposite hands).
+  gg::GearPairInput in;
+  in.z1 = 20;
+  in.z2 = 40;
+  in.module = 3.0;
+  EXPECT_EQ(gg::helix_hand(in, 0), gg::HelixHand::spur);
+  in.helix_angle = 15.0 * kDeg;
+  EXPECT_STREQ(gg::to_string(gg::helix_hand(in, 0)), "right");
+  EXPECT_STREQ(gg::to_string(gg::helix_hand(in, 1)), "left");
+  in.helix_angle = -15.0 * kDeg;
+  EXPECT_EQ(gg::helix_hand(in, 0), gg::HelixHand::left);
+  EXPECT_EQ(gg::helix_hand(in, 1), gg::HelixHand::right);
+  in.internal = true;
+  EXPECT_EQ(gg::helix_hand(in, 1), gg::HelixHand::left);
+}

@@ -1,5 +1,6 @@
 // CLI tests of the load-capacity part of `gearkit gear` (plugins/gear/gear_rating_*.cpp,
 // gear_pair_file.cpp, gear_size.cpp), run through GEARKIT_EXE.
+#include "iso6336_root_by_hand.hpp"
 #include "run_gearkit.hpp"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
@@ -300,4 +302,134 @@ TEST(GearRatingCli, PairFileGradeAndItsEdition) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["rating"]["iso1328_edition"], "ISO 1328-1:1995");
   const std::string bad = write("grade0_2013.yaml", base + "quality: 0\n" + load);
   expect_error(run("'" + bad + "'"), "grade0_2013.yaml:6:10:");
+}
+
+// ---- one allowance, the tools, the tips and the per-gear load data (issue 25) ----
+
+namespace {
+
+nlohmann::json json_of(const std::string& args) {
+  const CliRun r = run(args + " --format json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  return r.status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+}
+
+}  // namespace
+
+// The inspection's upper allowance A_sne (given here) is the one of the root rating: sigma_F1
+// changes as Y_F Y_S of ISO 6336-3 with x_E = x + A_sne/(2 m_n tan alpha_n), by hand
+// (iso6336_root_by_hand.hpp). On main the inspection's allowances did not reach the rating.
+TEST(GearRatingCli, TheInspectionAllowanceIsTheRootRatingsAllowance) {
+  const std::string base = kPair + kLoad + "--quality 5 --thickness-allowances2 0,-0.04 --thickness-allowances1 ";
+  const auto zero = json_of(base + "0,-0.04"), thin = json_of(base + "-0.06,-0.1");
+  ASSERT_TRUE(thin.contains("rating"));
+  EXPECT_DOUBLE_EQ(thin["gears"][0]["A_sne_mm"].get<double>(), -0.06);
+  EXPECT_DOUBLE_EQ(thin["rating"]["gears"][0]["A_sne_mm"].get<double>(), -0.06);
+  const auto& g = thin["gears"][0];
+  const double eps = thin["pair"]["contact_ratio_alpha"].get<double>(), pi = std::numbers::pi;
+  auto hand = [&](double A_sne) {
+    const double x_E = g["x"].get<double>() + A_sne / (2.0 * 8.0 * std::tan(pi / 9.0));
+    return gearkit::testing::root_by_hand(17, 8.0, pi / 9.0, 15.8 * pi / 180.0, 1.4, 0.39, 0.0, x_E, g["d_a_mm"].get<double>(), eps);
+  };
+  const auto h0 = hand(0.0), h1 = hand(-0.06);
+  const double sigma0 = zero["rating"]["gears"][0]["sigma_F_MPa"].get<double>();
+  const double sigma1 = thin["rating"]["gears"][0]["sigma_F_MPa"].get<double>();
+  EXPECT_NEAR(sigma1 / sigma0, h1.Y_F * h1.Y_S / (h0.Y_F * h0.Y_S), 2e-4);
+  EXPECT_NEAR(thin["rating"]["gears"][0]["Y_F"].get<double>(), h1.Y_F, 2e-4 * h1.Y_F);
+  // --quality alone: the ISO/TR 10064-2 allowances of the inspection, the same in the rating.
+  const auto by_grade = json_of(kPair + kLoad + "--quality 5");
+  for (int i = 0; i < 2; ++i) {
+    const double A = by_grade["gears"][i]["A_sne_mm"].get<double>();
+    EXPECT_LT(A, 0.0);
+    EXPECT_DOUBLE_EQ(by_grade["rating"]["gears"][i]["A_sne_mm"].get<double>(), A);
+  }
+  // A second allowance for the same teeth contradicts the first.
+  expect_error(run(kPair + kLoad + "--quality 5 --allowance1 -0.05"), "'--allowance1'");
+  expect_error(run(kPair + kLoad + "--thickness-allowances1 -0.06,-0.1 --backlash 0.2"), "'--backlash'");
+}
+
+// A pair file with a grade and no allowance1/2 is rated with the grade's allowances, as the options are.
+TEST(GearRatingCli, PairFileGradeGivesTheSameAllowanceAsTheOptions) {
+  const auto file = json_of("'" + kExample1 + "'");
+  const auto opts = json_of(kPair + kLoad + "--quality 5 --life 50000 --oil-viscosity 320 --flank-roughness 1 --tip-relief 70 "
+                            "--min-safety-bending 1 --factor K_Hbeta=1.16");
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_DOUBLE_EQ(file["rating"]["gears"][i]["A_sne_mm"].get<double>(), opts["gears"][i]["A_sne_mm"].get<double>());
+  }
+}
+
+TEST(GearRatingCli, PerGearLoadData) {
+  const std::string base = kPair + " --speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9.5 "
+                                   "--factor K_Hbeta=1.16 ";
+  const auto ref = json_of(base + "--torque1 9kN*m --root-roughness 10");
+  // T_1 = T_2 z1/z2 (mesh efficiency 1).
+  const auto t2 = json_of(base + "--torque2 " + std::to_string(9000.0 * 103.0 / 17.0) + " --root-roughness 10,20");
+  EXPECT_NEAR(t2["rating"]["T_1_Nm"].get<double>(), 9000.0, 1e-3);
+  // Y_RrelT = 1.674 - 0.529 (R_z + 1)^0.1 for case-carburized steel, 1 <= R_z <= 40 um (ISO 6336-3:2019 12.3).
+  EXPECT_NEAR(t2["rating"]["gears"][0]["Y_RrelT"].get<double>(), 1.674 - 0.529 * std::pow(11.0, 0.1), 1e-12);
+  EXPECT_NEAR(t2["rating"]["gears"][1]["Y_RrelT"].get<double>(), 1.674 - 0.529 * std::pow(21.0, 0.1), 1e-12);
+  // Fully reversed bending of gear 2 only: mean stress factor Y_M = 0.7 of ISO 6336-3 for an idler.
+  const auto rev = json_of(base + "--torque1 9kN*m --reversed-bending2");
+  EXPECT_DOUBLE_EQ(rev["rating"]["gears"][0]["Y_M"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(rev["rating"]["gears"][1]["Y_M"].get<double>(), 0.7);
+  EXPECT_NEAR(rev["rating"]["gears"][1]["S_F"].get<double>(), 0.7 * ref["rating"]["gears"][1]["S_F"].get<double>(), 1e-9);
+  // Life as load cycles of gear 1: N_L1 as given, N_L2 = N_L1 z1/z2.
+  const auto cyc = json_of(base + "--torque1 9kN*m --life-cycles 3e8");
+  EXPECT_NEAR(cyc["rating"]["gears"][0]["N_L"].get<double>(), 3e8, 1e-3);
+  EXPECT_NEAR(cyc["rating"]["gears"][1]["N_L"].get<double>(), 3e8 * 17.0 / 103.0, 1e-3);
+  expect_error(run(base + "--torque1 9kN*m --torque2 50kN*m"), "'--torque2'");
+  expect_error(run(base + "--torque1 9kN*m --life 1000 --life-cycles 1e8"), "'--life-cycles'");
+  expect_error(run(base + "--torque1 9kN*m --root-roughness 10,x"), "'--root-roughness'");
+}
+
+TEST(GearRatingCli, ToolsAndTipsOfEachGear) {
+  const std::string base = "--z1 17 --z2 103 --module 8 --helix-angle 15.8 --centre-distance 500 --x1 0.145 --face-width 100 "
+                           "--speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9.5 "
+                           "--factor K_Hbeta=1.16 --torque1 9kN*m ";
+  const auto j = json_of(base + "--rack2 1,1.4,0.39 --tip-chamfer1 1");
+  ASSERT_TRUE(j.contains("rating"));
+  const double pi = std::numbers::pi, beta = 15.8 * pi / 180.0;
+  // d_f = d + 2 m_n (x - h_fP*) of each gear's tool.
+  for (int i = 0; i < 2; ++i) {
+    const auto& g = j["gears"][i];
+    EXPECT_NEAR(g["d_f_mm"].get<double>(), g["d_mm"].get<double>() + 16.0 * (g["x"].get<double>() - (i == 0 ? 1.25 : 1.4)), 1e-9);
+  }
+  // Gear 2's Y_F from its own tool, gear 1's from its chamfered tip d_Na1 = d_a1 - 2 h_K.
+  const double d_a1 = j["gears"][0]["d_a_mm"].get<double>(), d_Na1 = d_a1 - 2.0;
+  auto rho = [](double d_a, double d_b) { return 0.5 * std::sqrt(d_a * d_a - d_b * d_b); };
+  const double d_b1 = j["gears"][0]["d_b_mm"].get<double>(), d_b2 = j["gears"][1]["d_b_mm"].get<double>();
+  const double a = j["pair"]["centre_distance_mm"].get<double>(), alpha_wt = j["pair"]["alpha_wt_deg"].get<double>() * pi / 180.0;
+  const double eps = (rho(d_Na1, d_b1) + rho(j["gears"][1]["d_a_mm"].get<double>(), d_b2) - a * std::sin(alpha_wt)) / j["gears"][0]["p_b_mm"].get<double>();
+  const auto h1 = gearkit::testing::root_by_hand(17, 8.0, pi / 9.0, beta, 1.25, 0.38, 0.0, j["gears"][0]["x"].get<double>(), d_Na1, eps);
+  const auto h2 = gearkit::testing::root_by_hand(103, 8.0, pi / 9.0, beta, 1.4, 0.39, 0.0, j["gears"][1]["x"].get<double>(),
+                                                 j["gears"][1]["d_a_mm"].get<double>(), eps);
+  EXPECT_NEAR(j["rating"]["gears"][0]["Y_F"].get<double>(), h1.Y_F, 2e-4 * h1.Y_F);
+  EXPECT_NEAR(j["rating"]["gears"][1]["Y_F"].get<double>(), h2.Y_F, 2e-4 * h2.Y_F);
+  // An explicit tip diameter sets the table's d_a; a root diameter the tool does not cut is a warning.
+  const CliRun tips = run(base + "--tip-diameter1 156 --root-diameter2 830 --format json");
+  ASSERT_EQ(tips.status, 0) << tips.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(tips.out)["gears"][0]["d_a_mm"].get<double>(), 156.0);
+  EXPECT_NE(tips.out.find("gear 2: root diameter d_f = 830.0000 mm given"), std::string::npos);
+  expect_error(run(base + "--rack1 1,0.9,0.38"), "'--rack1'");
+  expect_error(run(base + "--usable-tip-diameter1 200"), "'--usable-tip-diameter1'");
+}
+
+// The same per-gear data from a pair file.
+TEST(GearRatingCli, PairFilePerGearKeys) {
+  const std::string file = write("per_gear.yaml",
+      "z1: 17\nz2: 103\nmodule: 8\nhelix_angle: 15.8\ncentre_distance: 500\nx1: 0.145\nface_width: 100\n"
+      "rack2: {addendum: 1, dedendum: 1.4, root_radius: 0.39}\ntip_diameter1: 156 mm\n"
+      "materials: {gear1: 18CrNiMo7-6, gear2: 18CrNiMo7-6}\ndeviations: {f_pb: 8 um, f_falpha: 9.5 um}\n"
+      "factors: {K_Hbeta: 1.16}\nroot_roughness2: 20 um\nreversed_bending2: true\ntip_chamfer1: 1 mm\n"
+      "load: {torque2: 54529.41 N*m, speed1: 360, life_cycles: 3e8}\n");
+  const auto f = json_of("'" + file + "'");
+  const auto o = json_of("--z1 17 --z2 103 --module 8 --helix-angle 15.8 --centre-distance 500 --x1 0.145 --face-width 100 "
+                         "--rack2 1,1.4,0.39 --tip-diameter1 156 --speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
+                         "--f-pb 8 --f-falpha 9.5 --factor K_Hbeta=1.16 --root-roughness 10,20 --reversed-bending2 --tip-chamfer1 1 "
+                         "--torque2 54529.41 --life-cycles 3e8");
+  ASSERT_TRUE(f.contains("rating"));
+  for (int i = 0; i < 2; ++i)
+    for (const char* k : {"S_F", "S_H", "Y_F", "Y_RrelT", "Y_M", "N_L"})
+      EXPECT_DOUBLE_EQ(f["rating"]["gears"][i][k].get<double>(), o["rating"]["gears"][i][k].get<double>()) << k;
+  EXPECT_DOUBLE_EQ(f["rating"]["gears"][1]["Y_M"].get<double>(), 0.7);
 }

@@ -6,6 +6,7 @@
 #include <gearkit/gear/iso6336_load.hpp>
 #include <gearkit/gear/iso6336_root.hpp>
 
+#include "iso6336_root_by_hand.hpp"
 #include "kisssoft_stage3.hpp"
 
 #include <gtest/gtest.h>
@@ -732,4 +733,140 @@ TEST(KisssoftStage2, SunPlanetToothRoot) {
     EXPECT_DOUBLE_EQ(g.Y_beta, 1.0);
     EXPECT_NEAR(g.sigma_F0, sigma_F0[i], 0.005) << i;
   }
+}
+
+// ---- the tool, the tips and the allowance of each gear (issue 25) ----
+
+namespace {
+
+// Y_F, Y_S of gear i of the ISO/TR example by hand (iso6336_root_by_hand.hpp) with the tool
+// h_fP*, rho_fP*, the shift x_E and the tip d_a of the case.
+gearkit::testing::RootByHand tr_root_by_hand(const gg::GearResult& g, double h_fP, double rho_fP, double x_E, double d_a, double eps_alpha) {
+  return gearkit::testing::root_by_hand(g.z, 8.0, 20.0 * kDeg, 15.8 * kDeg, h_fP, rho_fP, 0.0, x_E, d_a, eps_alpha);
+}
+
+}  // namespace
+
+TEST(RatingTools, UpperAllowanceGivesTheGeneratingShift) {
+  // x_E = x + A_sne/(2 m_n tan alpha_n) (ISO 21771 generating shift, used by ISO 6336-3 Eq. 20-29):
+  // A_sne = -0.06 mm on gear 1 by RatingInput::A_sne, the table's A_sn1 staying 0.
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = tr_example1_load();
+  const auto nominal = gg::rate_gear_pair(in, geo, load);
+  load.A_sne = {-0.06, std::nullopt};
+  const auto thin = gg::rate_gear_pair(in, geo, load);
+  const double x_E = geo.gear[0].x - 0.06 / (2.0 * 8.0 * std::tan(20.0 * kDeg));
+  const auto hand = tr_root_by_hand(geo.gear[0], 1.4, 0.39, x_E, geo.gear[0].d_a, geo.pair.eps_alpha);
+  const auto hand0 = tr_root_by_hand(geo.gear[0], 1.4, 0.39, geo.gear[0].x, geo.gear[0].d_a, geo.pair.eps_alpha);
+  EXPECT_NEAR(thin.gear[0].Y_F, hand.Y_F, 2e-4 * hand.Y_F);
+  EXPECT_NEAR(thin.gear[0].Y_S, hand.Y_S, 2e-4 * hand.Y_S);
+  // sigma_F carries Y_F Y_S; the K factors do not see the allowance.
+  EXPECT_NEAR(thin.gear[0].sigma_F / nominal.gear[0].sigma_F, hand.Y_F * hand.Y_S / (hand0.Y_F * hand0.Y_S), 2e-4);
+  EXPECT_GT(thin.gear[0].sigma_F, nominal.gear[0].sigma_F * 1.005);
+  EXPECT_DOUBLE_EQ(thin.gear[1].sigma_F, nominal.gear[1].sigma_F);
+}
+
+TEST(RatingTools, EachGearHasItsOwnTool) {
+  // Gear 2 cut by an ISO 53 D tool (1 / 1.4 / 0.39), gear 1 by ISO 53 A (1 / 1.25 / 0.38).
+  auto in = tr_example1_geometry();
+  in.h_fP = 1.25;
+  in.rho_fP = 0.38;
+  in.tool[1] = gg::Rack{20.0 * kDeg, 1.0, 1.4, 0.39};
+  const auto geo = gg::compute_gear_pair(in);
+  // d_f = d + 2 m_n (x - h_fP*) of each tool (ISO 21771).
+  EXPECT_NEAR(geo.gear[0].d_f, geo.gear[0].d + 2.0 * 8.0 * (geo.gear[0].x - 1.25), 1e-9);
+  EXPECT_NEAR(geo.gear[1].d_f, geo.gear[1].d + 2.0 * 8.0 * (geo.gear[1].x - 1.4), 1e-9);
+  const auto p = gg::rate_gear_pair(in, geo, tr_example1_load());
+  const double eps = geo.pair.eps_alpha;
+  const auto hand1 = tr_root_by_hand(geo.gear[0], 1.25, 0.38, geo.gear[0].x, geo.gear[0].d_a, eps);
+  const auto hand2 = tr_root_by_hand(geo.gear[1], 1.4, 0.39, geo.gear[1].x, geo.gear[1].d_a, eps);
+  EXPECT_NEAR(p.gear[0].Y_F, hand1.Y_F, 2e-4 * hand1.Y_F);
+  EXPECT_NEAR(p.gear[1].Y_F, hand2.Y_F, 2e-4 * hand2.Y_F);
+  EXPECT_NEAR(p.gear[1].Y_S, hand2.Y_S, 2e-4 * hand2.Y_S);
+  // Without a tool of its own a gear keeps the pair's rack: the shared-rack table is unchanged.
+  in.tool[1].reset();
+  const auto shared = gg::compute_gear_pair(in);
+  EXPECT_DOUBLE_EQ(shared.gear[0].d_f, geo.gear[0].d_f);
+  EXPECT_NEAR(shared.gear[1].d_f, geo.gear[1].d_f + 2.0 * 8.0 * (1.4 - 1.25), 1e-9);
+}
+
+TEST(RatingTools, UsableTipDiameterShortensThePathOfContact) {
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = tr_example1_load();
+  load.h_K = {1.0, std::nullopt};  // 1 mm radial chamfer on gear 1: d_Na1 = d_a1 - 2 mm
+  const auto p = gg::rate_gear_pair(in, geo, load);
+  const double d_Na1 = geo.gear[0].d_a - 2.0;
+  // eps_alpha = (rho_Na1 + rho_a2 - a sin alpha_wt) / p_bt (ISO 21771 path of contact).
+  auto rho = [](double d_a, double d_b) { return 0.5 * std::sqrt(d_a * d_a - d_b * d_b); };
+  const double eps = (rho(d_Na1, geo.gear[0].d_b) + rho(geo.gear[1].d_a, geo.gear[1].d_b) - geo.pair.a * std::sin(geo.pair.alpha_wt)) /
+                     geo.gear[0].p_bt;
+  EXPECT_NEAR(p.eps_alpha, eps, 1e-9);
+  EXPECT_LT(p.eps_alpha, geo.pair.eps_alpha - 0.05);
+  const auto hand1 = tr_root_by_hand(geo.gear[0], 1.4, 0.39, geo.gear[0].x, d_Na1, eps);
+  const auto hand2 = tr_root_by_hand(geo.gear[1], 1.4, 0.39, geo.gear[1].x, geo.gear[1].d_a, eps);
+  EXPECT_NEAR(p.gear[0].Y_F, hand1.Y_F, 2e-4 * hand1.Y_F);
+  EXPECT_NEAR(p.gear[1].Y_F, hand2.Y_F, 2e-4 * hand2.Y_F);
+  // The same tip given as d_Na; a d_Na above d_a is an error naming the field.
+  load.h_K = {std::nullopt, std::nullopt};
+  load.d_Na = {d_Na1, std::nullopt};
+  EXPECT_DOUBLE_EQ(gg::rate_gear_pair(in, geo, load).gear[0].Y_F, p.gear[0].Y_F);
+  load.d_Na = {geo.gear[0].d_a + 1.0, std::nullopt};
+  try {
+    gg::rate_gear_pair(in, geo, load);
+    FAIL() << "d_Na > d_a accepted";
+  } catch (const gg::RatingError& e) {
+    EXPECT_EQ(e.field(), "d_Na1");
+  }
+}
+
+TEST(RatingTools, TorqueOnGear2AndLifeInCycles) {
+  const auto in = tr_example1_geometry();
+  const auto geo = gg::compute_gear_pair(in);
+  auto load = tr_example1_load();
+  load.T_1 = 0.0;
+  load.T_2 = 9000.0 * 103.0 / 17.0;  // T_2 = T_1 u (mesh efficiency 1)
+  load.N_L1 = 1.08e9;                // 60 n_1 L_h = 60 x 360 x 50 000
+  load.life_h = 1.0;                 // replaced by the cycles
+  const auto p = gg::rate_gear_pair(in, geo, load);
+  EXPECT_NEAR(p.T_1, 9000.0, 1e-9);
+  EXPECT_NEAR(p.gear[0].N_L, 1.08e9, 1e-3);
+  EXPECT_NEAR(p.gear[1].N_L, 1.08e9 * 17.0 / 103.0, 1e-3);
+  const auto ref = gg::rate_gear_pair(in, geo, tr_example1_load());
+  EXPECT_NEAR(p.gear[0].S_H, ref.gear[0].S_H, 1e-12);
+  load.T_1 = 9000.0;
+  try {
+    gg::rate_gear_pair(in, geo, load);
+    FAIL() << "T_1 and T_2 both accepted";
+  } catch (const gg::RatingError& e) {
+    EXPECT_EQ(e.field(), "T_2");
+  }
+}
+
+TEST(RatingTools, FaceWidthOfEachGearAndTheirOffset) {
+  // b2 = 120 mm against b1 = 100 mm, centred: the mesh has b = 100 mm (ISO 6336-2); the wider
+  // gear's root carries at most 100 + 2 m_n = 116 mm (ISO 6336-3, DIN 3990-3), so sigma_F2 scales by 100/116.
+  auto in = tr_example1_geometry();
+  const auto load = tr_example1_load();
+  const auto ref = gg::rate_gear_pair(in, gg::compute_gear_pair(in), load);
+  in.face_widths = {100.0, 120.0};
+  const auto wide = gg::rate_gear_pair(in, gg::compute_gear_pair(in), load);
+  EXPECT_NEAR(wide.gear[0].sigma_H, ref.gear[0].sigma_H, 1e-9);
+  EXPECT_NEAR(wide.gear[0].sigma_F, ref.gear[0].sigma_F, 1e-9);
+  EXPECT_NEAR(wide.gear[1].sigma_F, ref.gear[1].sigma_F * 100.0 / 116.0, 1e-9);
+  // Equal widths 100 mm offset by 10 mm: common width 90 mm, each root 90 + min(m_n, 10) = 98 mm.
+  in.face_widths = {std::nullopt, std::nullopt};
+  in.face_offset = 10.0;
+  EXPECT_NEAR(gg::common_face_width(in), 90.0, 1e-12);
+  EXPECT_NEAR(gg::root_face_width(in, 0, 8.0), 98.0, 1e-12);
+  const auto offset_geo = gg::compute_gear_pair(in);
+  const auto offset = gg::rate_gear_pair(in, offset_geo, load);
+  in.face_offset = 0.0;
+  in.face_width = 90.0;
+  const auto narrow_geo = gg::compute_gear_pair(in);
+  const auto narrow = gg::rate_gear_pair(in, narrow_geo, load);
+  EXPECT_NEAR(offset_geo.pair.eps_beta, narrow_geo.pair.eps_beta, 1e-12);
+  EXPECT_NEAR(offset.gear[0].sigma_H, narrow.gear[0].sigma_H, 1e-9);
+  EXPECT_NEAR(offset.gear[0].sigma_F, narrow.gear[0].sigma_F * 90.0 / 98.0, 1e-9);
 }

@@ -2,6 +2,8 @@
 // is the narrowest whole-millimetre face that does, respects the ratio and the limits.
 #include <gearkit/gear/sizing.hpp>
 
+#include <gearkit/gear/inspection.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,7 +25,8 @@ gg::SizingInput reducer() {
   return s;
 }
 
-// The smallest margin min(S_H / S_Hmin, S_F / S_Fmin) of a candidate rated again at width b.
+// The smallest margin min(S_H / S_Hmin, S_F / S_Fmin) of a candidate rated again at width b, its
+// tooth root with the upper allowances ISO/TR 10064-2 gives the grade (as `gearkit gear --quality`).
 double margin(const gg::SizingCandidate& c, const gg::SizingInput& s, double b) {
   gg::GearPairInput g;
   g.z1 = c.z1;
@@ -32,7 +35,13 @@ double margin(const gg::SizingCandidate& c, const gg::SizingInput& s, double b) 
   g.x1 = c.x1;
   g.x2 = c.x2;
   g.face_width = b;
-  const auto r = gg::rate_gear_pair(g, gg::compute_gear_pair(g), s.load);
+  const auto table = gg::compute_gear_pair(g);
+  gg::InspectionInput ii;
+  ii.grade = {*s.load.quality, *s.load.quality};
+  const auto inspection = gg::compute_inspection(g, table, ii);
+  gg::RatingInput load = s.load;
+  for (int i = 0; i < 2; ++i) load.A_sne[i] = inspection.gear[i].allowances.A_sne;
+  const auto r = gg::rate_gear_pair(g, table, load);
   return std::min({r.gear[0].S_H / s.load.S_Hmin, r.gear[1].S_H / s.load.S_Hmin, r.gear[0].S_F / s.load.S_Fmin,
                    r.gear[1].S_F / s.load.S_Fmin});
 }

@@ -58,6 +58,10 @@ struct GearPairInput {
   double helix_angle = 0;     ///< rad: beta at the reference circle, |beta| < 45 deg
   ModuleSystem system = ModuleSystem::normal;
   double h_aP = 1.0, h_fP = 1.25, rho_fP = 0.38;  ///< basic rack coefficients (ISO 53 A)
+  /// The tool of each gear when the two are cut by different tools: its basic rack coefficients
+  /// h_aP*, h_fP*, rho_fP* (its alpha_P is ignored: the pair's pressure angle serves both);
+  /// empty: h_aP, h_fP, rho_fP above. Validated like the shared rack (field "tool1", "tool2").
+  std::array<std::optional<Rack>, 2> tool;
 
   double x1 = 0, x2 = 0;                 ///< profile shift coefficients, used if no centre distance
   std::optional<double> centre_distance; ///< mm, > 0; if set the shift sum follows from it
@@ -66,11 +70,46 @@ struct GearPairInput {
   bool apply_tip_shortening = true;
 
   double face_width = 0;       ///< mm, b >= 0 (overlap ratio; 0 gives eps_beta = 0)
+  /// Face width of each gear, mm, when they differ (empty: face_width), and the axial offset of
+  /// the middle of gear 2's face from gear 1's, mm. The mesh then has the common width of both
+  /// faces (common_face_width). Fields "face_width1", "face_width2", "face_offset".
+  std::array<std::optional<double>, 2> face_widths;
+  double face_offset = 0;
   double A_sn1 = 0, A_sn2 = 0; ///< normal tooth thickness allowances, mm (<= 0: thinner teeth)
   double A_a = 0;              ///< centre distance deviation, mm (> 0: shafts further apart)
   std::optional<double> backlash_target;  ///< normal backlash j_bn, mm; sets A_sn1 = A_sn2
   std::optional<double> pin_diameter1, pin_diameter2;  ///< mm; default: contact at d + 2 x m_n
+  /// Tip diameter of each gear as made, mm (magnitude; empty: from the rack, with tip shortening).
+  /// Contact ratio, clearances, sliding and tip thickness use it. Field "d_a1", "d_a2".
+  std::array<std::optional<double>, 2> d_a;
+  /// Root diameter of each gear as made, mm (magnitude; empty: what the tool cuts,
+  /// d + 2 m_n (x - h_fP*)). A value that differs from what the tool cuts by more than 1 um is a
+  /// warning: the tool data then do not describe the gear. Field "d_f1", "d_f2".
+  std::array<std::optional<double>, 2> d_f;
 };
+
+/// Face width of gear i (0 or 1), mm: face_widths[i] or face_width.
+double face_width_of(const GearPairInput& in, int i);
+
+/// The common face width of the pair, mm: the overlap of both faces (>= 0); face_width when the
+/// gears have one width and no offset. Overlap ratio and load capacity use it (ISO 6336: b).
+double common_face_width(const GearPairInput& in);
+
+/// Face width of gear i for its tooth root stress, mm (ISO 6336-3, DIN 3990-3: a
+/// wider face carries at most one module m_n beyond the mate's on each side): the common width
+/// plus, on each side, what the gear's face extends beyond the mate's, at most m_n.
+double root_face_width(const GearPairInput& in, int i, double m_n);
+
+/// The basic rack of the tool that cuts gear i (0 or 1): GearPairInput::tool[i] or the pair's
+/// h_aP, h_fP, rho_fP, with alpha_P = alpha_n.
+Rack tool_rack(const GearPairInput& in, int i, double alpha_n);
+
+/// Hand of the helix of gear i (0 or 1). Sign convention of GearPairInput::helix_angle: it is
+/// gear 1's, positive for a right-hand helix; gear 2 of an external pair has the opposite hand,
+/// a ring the same hand as its pinion.
+enum class HelixHand { spur, right, left };
+HelixHand helix_hand(const GearPairInput& in, int i);
+const char* to_string(HelixHand hand);  ///< "spur", "right", "left"
 
 /// One gear of the table. Diameters are positive magnitudes.
 struct GearResult {

@@ -101,7 +101,10 @@ struct FaceLoadInput {
 
 struct RatingInput {
   RatingMethod method = RatingMethod::iso6336;
-  double T_1 = 0;             ///< N m, torque on gear 1 (pinion), > 0
+  double T_1 = 0;             ///< N m, torque on gear 1 (pinion), > 0 (or 0 with T_2 given)
+  /// N m, torque on gear 2 instead of T_1 (0: T_1 is given). rate_gear_pair takes
+  /// T_1 = T_2 z1/z2 (magnitudes; mesh efficiency 1, as the rating of one mesh assumes).
+  double T_2 = 0;
   double n_1 = 0;             ///< 1/min, speed of gear 1 relative to the carrier of the mesh, > 0
   double K_A = 1.0;           ///< application factor (ISO 6336-6 Annex A), AGMA overload factor K_o
   double K_gamma = 1.0;       ///< mesh load factor (load sharing of planets), >= 1
@@ -124,6 +127,9 @@ struct RatingInput {
   double C_a = std::numeric_limits<double>::quiet_NaN();       ///< tip relief (NaN: C_ay by running-in)
   FaceLoadInput face_load;    ///< shaft and flank line modification for f_sh, F_betax (method C)
   double life_h = 20000;      ///< required life, h, > 0
+  /// Required life as load cycles of gear 1 (NaN: life_h). rate_gear_pair takes
+  /// life_h = N_L1 / (60 n_1 cycles_per_rev[0]); not with a spectrum (its rows are hours).
+  double N_L1 = std::numeric_limits<double>::quiet_NaN();
   double nu_40 = 220;         ///< kinematic viscosity of the oil at 40 C, mm^2/s
   std::array<double, 2> R_z_flank{3.0, 3.0};   ///< um, flank roughness R_z (6 R_a)
   std::array<double, 2> R_z_root{10.0, 10.0};  ///< um, root roughness R_z
@@ -134,7 +140,21 @@ struct RatingInput {
   bool limited_pitting = false;   ///< Z_NT line with limited pitting permitted
   bool optimum_long_life = false; ///< Z_NT = Y_NT = 1 at 1e10 (optimum conditions) instead of 0.85
   RootShift root_shift = RootShift::generating;
-  double s_pr = 0;                ///< residual protuberance of the tool / m_n
+  double s_pr = 0;                ///< residual protuberance of the tools / m_n (both gears)
+  /// Residual protuberance s_pr/m_n of the tool of each gear (s_pr = p_r - q: protuberance less
+  /// the grinding stock), when the gears are cut by different tools; empty: s_pr.
+  std::array<std::optional<double>, 2> s_pr_gear;
+  /// Upper normal tooth thickness allowance A_sne of each gear, mm, for the generating shift
+  /// x_E = x + A_sne/(2 m_n tan alpha_n) of the root rating; empty: the gear table's A_sn
+  /// (GearPairInput A_sn1, A_sn2). Front ends set it from the inspection's allowances
+  /// (given, DIN 3967 or ISO/TR 10064-2), so that one allowance serves table, inspection and rating.
+  std::array<std::optional<double>, 2> A_sne;
+  /// Usable tip diameter d_Na of each gear, mm (magnitude): where the involute ends below a tip
+  /// chamfer or rounding. Empty: the tip diameter of the table, less 2 h_K with a chamfer. The
+  /// rating's contact ratio, Z_B/Z_D and the load point of Y_F use it (ISO 6336-1/3: d_Na);
+  /// the table (clearances) keeps d_a. External: d_b < d_Na <= d_a; ring: d_b < d_a <= d_Na.
+  std::array<std::optional<double>, 2> d_Na;
+  std::array<std::optional<double>, 2> h_K;  ///< radial tip chamfer of each gear, mm (d_Na = d_a -+ 2 h_K)
   std::vector<iso6336::LoadBin> spectrum;  ///< load spectrum (empty: T_1, n_1 for life_h)
   double reliability = 0.99;      ///< AGMA
   int Q_v = 0;                    ///< AGMA quality number 3..16 for K_v (0: 17 - quality)
@@ -177,7 +197,7 @@ struct PairRating {
 };
 
 /// Rates the pair. @throws RatingError naming the input field when the input is invalid
-/// (T_1 <= 0, n_1 <= 0, face width 0, an invalid material, life <= 0, a grade outside its edition
+/// (T_1 <= 0 without T_2, T_1 and T_2 both given, T_2 < 0, N_L1 <= 0 or with a spectrum, n_1 <= 0, face width 0, an invalid material, life <= 0, a grade outside its edition
 /// (2013: 1..11, 1995: 0..12),
 /// missing deviations for a computed K_v / K_Hbeta / K_Halpha, a spectrum row with T <= 0, shaft
 /// data that is incomplete or out of range ("face_load") ...).
