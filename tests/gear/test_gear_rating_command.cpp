@@ -187,7 +187,7 @@ TEST(GearSizeCli, CandidatesMeetTheRequiredSafety) {
 
 // The heading carries every design input; --centre-distance and --hunting-tooth reach the sizing.
 TEST(GearSizeCli, HeadingEchoesTheDesignInputs) {
-  const CliRun r = run("size --ratio 3.5 --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 42CrMo4 --quality 7 "
+  const CliRun r = run("size --ratio 3.5 --torque1 500N*m --speed1 1450rpm --material1 18CrNiMo7-6 --material2 42CrMo4 --quality 7 "
                        "--life 30000 --application-factor 1.35 --helix-angle 12 --centre-distance 160 --hunting-tooth --modules 2,2.5,3");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string heading = r.out.substr(0, r.out.find('\n'));
@@ -195,7 +195,7 @@ TEST(GearSizeCli, HeadingEchoesTheDesignInputs) {
                            "life 30000 h", "18CrNiMo7-6 / 42CrMo4", "iso6336", "a = 160 mm", "hunting-tooth"}) {
     EXPECT_NE(heading.find(part), std::string::npos) << part << " missing in: " << heading;
   }
-  const CliRun j = run("size --ratio 3.5 --torque1 500 --speed1 1450 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --quality 6 "
+  const CliRun j = run("size --ratio 3.5 --torque1 500N*m --speed1 1450rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --quality 6 "
                        "--helix-angle 12 --centre-distance 160 --hunting-tooth --modules 2,2.5,3 --count 10 --format json");
   ASSERT_EQ(j.status, 0) << j.err;
   const auto c = nlohmann::json::parse(j.out)["sizing"]["candidates"];
@@ -204,7 +204,7 @@ TEST(GearSizeCli, HeadingEchoesTheDesignInputs) {
     EXPECT_NEAR(k["a_mm"].get<double>(), 160.0, 1e-6);
     EXPECT_EQ(std::gcd(k["z1"].get<int>(), k["z2"].get<int>()), 1);
   }
-  expect_error(run("size --ratio 3 --torque1 500 --speed1 1450 --material1 C45 --material2 C45 --centre-distance -5"), "'--centre-distance'");
+  expect_error(run("size --ratio 3 --torque1 500N*m --speed1 1450rpm --material1 C45 --material2 C45 --centre-distance -5"), "'--centre-distance'");
 }
 
 TEST(GearSizeCli, BadInput) {
@@ -359,11 +359,11 @@ TEST(GearRatingCli, PairFileGradeGivesTheSameAllowanceAsTheOptions) {
 }
 
 TEST(GearRatingCli, PerGearLoadData) {
-  const std::string base = kPair + " --speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9.5 "
+  const std::string base = kPair + " --speed1 360rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9.5 "
                                    "--factor K_Hbeta=1.16 ";
   const auto ref = json_of(base + "--torque1 9kN*m --root-roughness 10");
   // T_1 = T_2 z1/z2 (mesh efficiency 1).
-  const auto t2 = json_of(base + "--torque2 " + std::to_string(9000.0 * 103.0 / 17.0) + " --root-roughness 10,20");
+  const auto t2 = json_of(base + "--torque2 " + std::to_string(9000.0 * 103.0 / 17.0) + "N*m --root-roughness 10,20");
   EXPECT_NEAR(t2["rating"]["T_1_Nm"].get<double>(), 9000.0, 1e-3);
   // Y_RrelT = 1.674 - 0.529 (R_z + 1)^0.1 for case-carburized steel, 1 <= R_z <= 40 um (ISO 6336-3:2019 12.3).
   EXPECT_NEAR(t2["rating"]["gears"][0]["Y_RrelT"].get<double>(), 1.674 - 0.529 * std::pow(11.0, 0.1), 1e-12);
@@ -384,7 +384,7 @@ TEST(GearRatingCli, PerGearLoadData) {
 
 TEST(GearRatingCli, ToolsAndTipsOfEachGear) {
   const std::string base = "--z1 17 --z2 103 --module 8 --helix-angle 15.8 --centre-distance 500 --x1 0.145 --face-width 100 "
-                           "--speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9.5 "
+                           "--speed1 360rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9.5 "
                            "--factor K_Hbeta=1.16 --torque1 9kN*m ";
   const auto j = json_of(base + "--rack2 1,1.4,0.39 --tip-chamfer1 1");
   ASSERT_TRUE(j.contains("rating"));
@@ -424,9 +424,9 @@ TEST(GearRatingCli, PairFilePerGearKeys) {
       "load: {torque2: 54529.41 N*m, speed1: 360, life_cycles: 3e8}\n");
   const auto f = json_of("'" + file + "'");
   const auto o = json_of("--z1 17 --z2 103 --module 8 --helix-angle 15.8 --centre-distance 500 --x1 0.145 --face-width 100 "
-                         "--rack2 1,1.4,0.39 --tip-diameter1 156 --speed1 360 --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
+                         "--rack2 1,1.4,0.39 --tip-diameter1 156 --speed1 360rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 "
                          "--f-pb 8 --f-falpha 9.5 --factor K_Hbeta=1.16 --root-roughness 10,20 --reversed-bending2 --tip-chamfer1 1 "
-                         "--torque2 54529.41 --life-cycles 3e8");
+                         "--torque2 54529.41N*m --life-cycles 3e8");
   ASSERT_TRUE(f.contains("rating"));
   for (int i = 0; i < 2; ++i)
     for (const char* k : {"S_F", "S_H", "Y_F", "Y_RrelT", "Y_M", "N_L"})
