@@ -7,14 +7,10 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
-#include <unistd.h>
 
 namespace gearkit::plugins::dyn {
 
@@ -22,14 +18,6 @@ namespace gd = gearkit::dyn;
 
 gd::InertiaTable mechanism_inertia_table(const std::string& path, int intervals, const io::SourceMark& where,
                                          const mechanism::ElementTypeLookup& elements) {
-  // A file that cannot be read is the dyn model's mistake: say where the model names it (the
-  // mechanism file's own errors carry its own file, line and column).
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    io::fail_at(where, fmt::format("'mechanism': expected a mechanism file, found the folder {}", io::quote(path)));
-  if (::access(path.c_str(), R_OK) != 0)
-    io::fail_at(where, fmt::format("'mechanism': cannot read {}: {}", io::quote(path),
-                                   errno == ENOENT ? "no such file" : std::strerror(errno)));
   const mechanism::Mechanism mech = mechanism::load_mechanism(path, elements);
   const kin::Model& model = mech.model;
   if (model.drivers().empty() || model.drivers().front().quantity != kin::DriverQuantity::angle)
