@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -23,13 +25,28 @@ namespace {
 // The demo is all or nothing (docs/cli.md, "Output files"): its steps run in a private folder,
 // and every file they leave there goes into the user's folder through one OutputSet, committed
 // only when every step has succeeded and every destination has been checked.
+/// The folder for the demo's scratch folder: $TMPDIR when it names an existing folder by an
+/// absolute path, else /tmp (docs/cli.md, "Output files"). fs::temp_directory_path() throws on a
+/// TMPDIR that is not a folder and accepts a relative one, which would follow the working folder.
+fs::path temporary_folder_root(std::ostream& err) {
+  const char* env = std::getenv("TMPDIR");
+  if (env == nullptr || *env == '\0') return "/tmp";
+  const fs::path dir = env;
+  std::error_code ec;
+  if (dir.is_absolute() && fs::is_directory(dir, ec)) return dir;
+  const char* why = !dir.is_absolute() ? "not an absolute path" : fs::exists(dir, ec) ? "not a folder" : "missing";
+  err << fmt::format("gearkit: warning: TMPDIR {} is {}; demo uses /tmp\n", io::quote(env), why);
+  return "/tmp";
+}
+
 class ScratchFolder {
  public:
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "gearkit-demo-XXXXXX").string();
+  explicit ScratchFolder(std::ostream& err) {
+    const fs::path root = temporary_folder_root(err);
+    std::string pattern = (root / "gearkit-demo-XXXXXX").string();
     if (!::mkdtemp(pattern.data()))
-      throw io::InputError(
-          fmt::format("demo: cannot create a temporary folder in {}", io::quote(fs::temp_directory_path().string())));
+      throw io::InputError(fmt::format("demo: cannot create a temporary folder in {}: {}", io::quote(root.string()),
+                                       std::strerror(errno)));
     path_ = pattern;
   }
   ~ScratchFolder() {
@@ -125,7 +142,7 @@ int run_demo_command(plugin::CommandContext& context, const plugin::PluginHost& 
   const fs::path dir = vm["output"].as<std::string>();
   const std::vector<fs::path> created = create_folder(dir);
   try {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch(context.err);
     for (const auto& model : demo_models()) std::ofstream(scratch.path() / model.file, std::ios::binary) << model.text;
     context.out << fmt::format("gearkit demo: writing into {}\n\n", fs::absolute(dir).lexically_normal().string());
     if (const int status = run_steps(context, host, scratch.path()); status != 0) {

@@ -34,7 +34,7 @@ std::optional<double> animation_speed(const io::po::variables_map& vm, const mec
   } catch (const io::QuantityError& e) {
     io::fail_option("--speed", e.what());
   }
-  if (!(v > 0)) io::fail_option("--speed", fmt::format("expected a speed above 0, found {}", vm["speed"].as<std::string>()));
+  if (!(v > 0)) io::fail_option("--speed", fmt::format("expected a speed above 0, found {}", io::quote(vm["speed"].as<std::string>())));
   return v;
 }
 

@@ -117,7 +117,15 @@ void KinRows::cells(const KinPosition& p, std::vector<std::string>& row) const {
     }
   }
   if (p.transmission_angle) cell(*p.transmission_angle * kRadToDeg, 2);
-  if (p.forces) cell(p.forces->effort_virtual_power[static_cast<std::size_t>(driver_)], 4);
+  if (p.forces) {
+    const double effort = p.forces->effort_virtual_power[static_cast<std::size_t>(driver_)];
+    if (!std::isfinite(effort) && p.forces->friction && p.forces->friction->forward.wedged) {
+      if (n == row.size()) row.emplace_back();
+      row[n++] = "wedged";  // no finite effort moves it (a warning says so); null in JSON
+    } else {
+      cell(effort, 4);
+    }
+  }
   row.resize(n);
 }
 
@@ -193,7 +201,10 @@ void KinRows::json(const KinPosition& p, io::JsonWriter& w) const {
     w.value(shown_output(o, p.outputs[k].value));
     if (output_keys_[k].has_rate) {
       w.key(output_keys_[k].rate);
-      w.value(p.outputs[k].rate * rate_scale);
+      // A speed's rate where the point stands still is undefined: null, which KinWriter's
+      // warning explains (no "not finite" warning of its own).
+      if (o.kind == kin::OutputKind::point_speed && !std::isfinite(p.outputs[k].rate)) w.null();
+      else w.value(p.outputs[k].rate * rate_scale);
     }
     if (output_keys_[k].has_acceleration) {
       w.key(output_keys_[k].acceleration);
@@ -295,8 +306,12 @@ void reactions_section(const mechanism::Mechanism& mech, const KinPosition& p, i
   const double vp = p.forces->effort_virtual_power[static_cast<std::size_t>(driver)];
   const double lg = p.forces->effort_lagrange[static_cast<std::size_t>(driver)];
   const bool ang = angular(mech, driver);
-  rep.notes.push_back(fmt::format("Driving {}: {:.4f} {} by virtual power, {:.4f} {} by Lagrange multipliers",
-                                  ang ? "torque" : "force", vp, ang ? "N m" : "N", lg, ang ? "N m" : "N"));
+  if (!std::isfinite(vp) && p.forces->friction && p.forces->friction->forward.wedged)
+    rep.notes.push_back(fmt::format("Driving {}: none, friction wedges the mechanism in the analysed sense (see the warnings)",
+                                    ang ? "torque" : "force"));
+  else
+    rep.notes.push_back(fmt::format("Driving {}: {:.4f} {} by virtual power, {:.4f} {} by Lagrange multipliers",
+                                    ang ? "torque" : "force", vp, ang ? "N m" : "N", lg, ang ? "N m" : "N"));
   add_force_details_report(rep, m, p, driver, ang);
 }
 

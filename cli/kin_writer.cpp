@@ -2,12 +2,14 @@
 #include "kin_equations.hpp"
 #include "kin_units.hpp"
 
+#include <gearkit/io/error.hpp>
 #include <gearkit/io/report_output.hpp>
 #include <gearkit/kin/fourbar.hpp>
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <system_error>
 
 namespace gearkit::cli {
@@ -37,6 +39,7 @@ KinWriter::KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, cons
   if (whole_) {
     files_.reserve("--output", r.common.output);
     whole_rows_ = rows_.table();
+    whole_writer_.set_path_prefix("positions[]");
   } else {
     stream_.emplace(files_.stream("--output", r.common.output), r.common.format);
     stream_->set_csv_streamed_table_only(r.common.format == io::Format::csv && r.common.table != "all");
@@ -93,6 +96,8 @@ void KinWriter::write_row(const KinPosition& p) {
 
 void KinWriter::add(const KinPosition& p) {
   if (!begun_) begin(&p);
+  note_undefined_rates(p);
+  ++seen_positions_;
   if (rows_thread_)
     rows_thread_->push(p);
   else
@@ -108,8 +113,32 @@ void KinWriter::add(const KinPosition& p) {
   }
 }
 
+// The rate of a speed output, d|v|/dt = v.a/|v|, has no value where the point stands still (a
+// point of the ground, or a dead point): JSON shows null, the text table has no rate column, so
+// every format says so by a warning (issue 26, section 3).
+// Likewise a sweep through positions where friction wedges the mechanism: the effort is null in
+// JSON and "wedged" in the table, and the one-position report's warning becomes a count.
+void KinWriter::note_undefined_rates(const KinPosition& p) {
+  if (undefined_rates_.empty()) undefined_rates_.assign(mech_.outputs.size(), 0);
+  for (std::size_t k = 0; k < mech_.outputs.size() && k < p.outputs.size(); ++k)
+    if (mech_.outputs[k].kind == kin::OutputKind::point_speed && !std::isfinite(p.outputs[k].rate)) ++undefined_rates_[k];
+  if (r_.range && p.forces && p.forces->friction && p.forces->friction->forward.wedged && wedged_++ == 0)
+    first_wedged_ = p.input;
+}
+
 io::Report KinWriter::tail_of(const KinAnalysis& a) {
   io::Report tail = kin_report_tail(mech_, a);
+  for (std::size_t k = 0; k < undefined_rates_.size(); ++k)
+    if (undefined_rates_[k] > 0)
+      tail.warnings.push_back(fmt::format("output {}: the point stands still at {} of {} positions, where the rate of its "
+                                          "speed (d|v|/dt) is undefined (null in JSON)",
+                                          io::quote(mech_.outputs[k].name), undefined_rates_[k], seen_positions_));
+  if (wedged_ > 0)
+    tail.warnings.push_back(fmt::format("wedged (self-locking) at {} of {} positions, the first at {:.6g} {}: no finite "
+                                        "driving effort moves the mechanism in the analysed sense there (the effort is "
+                                        "'wedged' in the table, null in JSON)",
+                                        wedged_, seen_positions_, shown_input(mech_, r_.driver, first_wedged_),
+                                        input_unit(mech_, r_.driver)));
   for (io::Table& t : equations_.tables) tail.tables.push_back(std::move(t));
   tail.notes.insert(tail.notes.end(), equations_.notes.begin(), equations_.notes.end());
   tail.warnings.insert(tail.warnings.end(), equations_.warnings.begin(), equations_.warnings.end());
@@ -158,7 +187,11 @@ int KinWriter::finish_whole(io::Report tail) {
   whole.warnings.insert(whole.warnings.end(), tail.warnings.begin(), tail.warnings.end());
   for (const auto& [key, value] : tail.json.items()) whole.json[key] = value;
   whole.json["positions"] = nlohmann::json::parse(written_ == 0 ? std::string("[]") : whole_json_ + "]");
-  io::warn_non_finite(whole);
+  // The positions' JSON was written as text: its non-finite values are nulls there already.
+  std::vector<std::string> names = io::non_finite_quantities(whole);
+  for (const std::string& p : whole_writer_.non_finite_paths())
+    if (std::find(names.begin(), names.end(), "'" + p + "'") == names.end()) names.push_back("'" + p + "'");
+  for (std::string& w : io::non_finite_warnings(names)) whole.warnings.push_back(std::move(w));
   files_.fill("--output", io::render_for_output(whole, r_.common, files_));
   files_.commit();
   io::print_moved_warnings(whole, r_.common, err_);

@@ -53,6 +53,7 @@ class KinWriter {
   io::Report tail_of(const KinAnalysis& a);
   void fill_pictures(const KinAnalysis& a, io::Report& tail);
   int finish_whole(io::Report tail);
+  void note_undefined_rates(const KinPosition& p);
 
   const mechanism::Mechanism& mech_;
   const KinRequest& r_;
@@ -75,6 +76,10 @@ class KinWriter {
   std::vector<KinPosition> frames_;
   std::optional<KinPosition> last_;
   long stride_ = 1, seen_ = 0;
+  std::vector<long> undefined_rates_;  // per output: positions where a speed's rate is undefined
+  long seen_positions_ = 0;
+  long wedged_ = 0;          // positions of a sweep where friction wedges the mechanism
+  double first_wedged_ = 0;  // the input of the first one
   std::optional<RowPipeline> rows_thread_;  // last: stopped before the stream it writes to goes
 };
 

@@ -7,6 +7,7 @@
 
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/output.hpp>
 #include <gearkit/mechanism/reader.hpp>
 #include <gearkit/plugin/plugin_host.hpp>
 
@@ -24,6 +25,7 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace {
@@ -96,6 +98,21 @@ void flush_standard_output() {
   written = ::write(STDERR_FILENO, what, std::strlen(what));
   written = ::write(STDERR_FILENO, "\n", 1);
   std::_Exit(1);
+}
+
+/// Opens /dev/null on each of standard input, output and error that the caller closed
+/// (`gearkit ... >&-`). Otherwise the first file the run opens would get descriptor 1 and the
+/// report would be written into it (a closed stdout appended the text report to `--svg t.svg`).
+void open_closed_standard_streams() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    const int opened = ::open("/dev/null", O_RDWR);  // the lowest free descriptor: `fd` itself
+    if (opened < 0) std::_Exit(1);                     // no /dev/null: nothing safe to write with
+    if (opened != fd) {
+      ::dup2(opened, fd);
+      ::close(opened);
+    }
+  }
 }
 
 void install_out_of_memory_handling() {
@@ -240,6 +257,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  open_closed_standard_streams();
+  gearkit::io::remove_temporaries_on_signals();
   install_out_of_memory_handling();
   try {
     int status = run(argc, argv);

@@ -314,6 +314,35 @@ std::string option_error_message(const po::error& e, const po::options_descripti
   return shorten_quoted_parts(e.what());
 }
 
+namespace {
+
+/// "unexpected argument 'x'; usage: ..." naming the first word beyond the positional arguments
+/// the command takes, with the usage cut at a word to keep the line short (the whole usage is
+/// in --help).
+std::string unexpected_argument_message(const std::vector<std::string>& args, const po::options_description& desc,
+                                        const po::positional_options_description& positional, std::string_view usage) {
+  std::string word;
+  try {
+    const auto parsed = po::command_line_parser(args).options(desc).allow_unregistered().run();
+    const auto words = po::collect_unrecognized(parsed.options, po::include_positional);
+    std::vector<std::string> positional_words;
+    for (const auto& w : words)
+      if (w.empty() || w == "-" || w[0] != '-') positional_words.push_back(w);
+    if (positional.max_total_count() < positional_words.size()) word = positional_words[positional.max_total_count()];
+  } catch (const po::error&) {
+  }
+  std::string_view line = first_line(usage);
+  std::string shown(line);
+  if (line.size() > 120) {
+    const std::size_t cut = line.rfind(' ', 116);
+    shown = std::string(line.substr(0, cut == std::string_view::npos ? 116 : cut)) + " ...";
+  }
+  if (word.empty()) return fmt::format("unexpected argument; usage: {}", shown);
+  return fmt::format("unexpected argument {}; usage: {}", quote(word), shown);
+}
+
+}  // namespace
+
 bool parse_command_line(const std::vector<std::string>& args, const po::options_description& desc,
                         const po::positional_options_description& positional, po::variables_map& vm,
                         std::string_view usage, std::ostream& out) {
@@ -327,7 +356,7 @@ bool parse_command_line(const std::vector<std::string>& args, const po::options_
     }
     po::notify(vm);
   } catch (const po::too_many_positional_options_error&) {
-    throw InputError(fmt::format("unexpected argument; usage: {}", first_line(usage)));
+    throw InputError(unexpected_argument_message(args, desc, positional, usage));
   } catch (const po::required_option& e) {
     std::string name = e.get_option_name();
     name.erase(0, name.find_first_not_of('-'));

@@ -2,6 +2,8 @@
 
 #include <gearkit/io/error.hpp>
 
+#include "temporary_registry.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -190,6 +192,7 @@ struct OutputSet::Output {
   bool exists = false;
   struct stat existing {};  ///< of the destination, when it exists
   fs::path temporary;
+  int temporary_slot = -1;  ///< its record for the signal handler (temporary_registry.hpp)
   int fd = -1;
   bool in_place = false;   ///< copy into the existing inode instead of renaming over it
   bool streamed = false;
@@ -203,6 +206,7 @@ struct OutputSet::Output {
   ~Output() {
     if (fd >= 0) ::close(fd);
     if (!temporary.empty()) ::unlink(temporary.c_str());
+    detail::forget_temporary(temporary_slot);
   }
 
   [[noreturn]] void fail(std::string_view reason) const { cannot_write(option, path, reason); }
@@ -268,9 +272,13 @@ struct OutputSet::Output {
     std::string name = target.filename().string().substr(0, 100);
     for (int attempt = 0; fd < 0; ++attempt) {
       temporary = dir / fmt::format(".{}.{}-{}{}", name, ::getpid(), random_letters(6), kTemporarySuffix);
+      // Recorded before it exists, so that no signal can come between its creation and its record.
+      temporary_slot = detail::remember_temporary(temporary.c_str());
       fd = ::open(temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, exists ? 0600 : 0666);
       if (fd < 0) {
         int err = errno;
+        detail::forget_temporary(temporary_slot);
+        temporary_slot = -1;
         temporary.clear();
         if (err != EEXIST || attempt > 100) fail_errno(err);
       }
@@ -318,7 +326,11 @@ struct OutputSet::Output {
   void move_into_place() {
     if (in_place) copy_in_place();
     else if (::rename(temporary.c_str(), target.c_str()) != 0) fail_errno(errno);
-    else temporary.clear();
+    else {
+      temporary.clear();
+      detail::forget_temporary(temporary_slot);
+      temporary_slot = -1;
+    }
     ::close(fd);
     fd = -1;
   }

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
@@ -50,7 +51,8 @@ const std::array kUnits = {
     UnitDef{"cm", 1e-2 * kMetre, kLength},
     UnitDef{"km", 1e3 * kMetre, kLength},
     UnitDef{"um", 1e-6 * kMetre, kLength},
-    UnitDef{"µm", 1e-6 * kMetre, kLength},
+    UnitDef{"µm", 1e-6 * kMetre, kLength},       // U+00B5 MICRO SIGN
+    UnitDef{"\u03bcm", 1e-6 * kMetre, kLength},  // U+03BC GREEK SMALL LETTER MU, which fonts draw the same
     UnitDef{"in", 0.0254, kLength},
     UnitDef{"ft", 0.3048, kLength},
     UnitDef{"rad", 1.0, kAngleD},
@@ -122,6 +124,25 @@ bool compatible(const Dim& found, const Dim& expected) {
 std::string quoted(std::string_view s) { return quote(s); }
 
 bool is_space(char c) { return c == ' ' || c == '\t'; }
+
+/// `text` with the spaces word processors put between a number and its unit (U+00A0 no-break,
+/// U+202F narrow no-break, U+2009 thin) made plain spaces: they look the same, so a message that
+/// refused them would show a space as the culprit.
+std::string plain_spaces(std::string_view text) {
+  static constexpr std::array<std::string_view, 3> kSpaces{"\u00a0", "\u202f", "\u2009"};
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto match =
+        std::find_if(kSpaces.begin(), kSpaces.end(), [&](std::string_view sp) { return text.substr(i, sp.size()) == sp; });
+    if (match != kSpaces.end()) {
+      out += ' ';
+      i += match->size();
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
+}
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
@@ -221,7 +242,7 @@ ParsedUnit parse_unit(std::string_view text, std::string_view whole) {
       if (ptext.empty() || ptext == "-" || ptext == "+")
         throw QuantityError(fmt::format("expected an integer exponent after '^' in {}", quoted(whole)));
       std::from_chars(ptext.data() + (ptext[0] == '+' ? 1 : 0), ptext.data() + ptext.size(), power);
-      if (power == 0 || std::abs(power) > 4)
+      if (std::abs(power) > 4)
         throw QuantityError(fmt::format("expected an exponent from -4 to 4, found {} in {}", ptext,
                                         quoted(whole)));
     }
@@ -317,7 +338,9 @@ MagnitudeRange magnitude_range(Quantity q) {
   return {kFloor, 1e9, ""};
 }
 
-double unit_factor_si(std::string_view unit, Quantity expected) {
+double unit_factor_si(std::string_view given_unit, Quantity expected) {
+  const std::string plain = plain_spaces(given_unit);
+  const std::string_view unit = plain;
   const std::string ascii = ascii_unit(trim(unit));
   ParsedUnit u = parse_unit(ascii, unit);
   if (!compatible(u.dim, dimension_of(expected)))
@@ -328,8 +351,9 @@ double unit_factor_si(std::string_view unit, Quantity expected) {
 namespace {
 
 /// The SI value of `text` and the number as typed (before its unit).
-std::pair<double, double> parse_si_and_number(std::string_view text, Quantity expected, std::string_view default_unit) {
-  std::string_view t = trim(text);
+std::pair<double, double> parse_si_and_number(std::string_view given, Quantity expected, std::string_view default_unit) {
+  const std::string plain = plain_spaces(given);
+  std::string_view t = trim(plain);
   if (t.empty()) throw QuantityError(fmt::format("expected {}, found an empty value", describe(expected)));
   std::size_t n = scan_number(t);
   if (n == 0)
@@ -362,7 +386,7 @@ std::pair<double, double> parse_si_and_number(std::string_view text, Quantity ex
     const std::string ascii = ascii_unit(rest);
     ParsedUnit u = parse_unit(ascii, t);
     if (!compatible(u.dim, dimension_of(expected)))
-      throw QuantityError(fmt::format("expected {}, found {} (unit '{}')", describe(expected), quoted(t), rest));
+      throw QuantityError(fmt::format("expected {}, found {} (unit {})", describe(expected), quoted(t), quoted(rest)));
     factor = u.factor * rotational_frequency_factor(u, expected);
   }
   double si_value = value * factor;
@@ -379,7 +403,8 @@ double parse_quantity_si_any_size(std::string_view text, Quantity expected, std:
 
 double parse_quantity_si(std::string_view text, Quantity expected, std::string_view default_unit) {
   const auto [si_value, value] = parse_si_and_number(text, expected, default_unit);
-  const std::string_view t = trim(text);
+  const std::string plain = plain_spaces(text);
+  const std::string_view t = trim(plain);
   const MagnitudeRange range = magnitude_range(expected);
   // A non-zero number that underflows to 0 in SI is as much out of range as one that is tiny.
   const double size = si_value == 0.0 && value != 0.0 ? std::numeric_limits<double>::denorm_min() : std::abs(si_value);

@@ -98,9 +98,14 @@ void text_rule(std::ostream& out, const std::vector<std::size_t>& width) {
 }
 
 std::string md_escape(const std::string& s) {
+  // Markdown passes HTML through: a name "<script>" would run in a rendered report. The entities
+  // show the characters themselves; '|' would end a table cell.
   std::string r;
   for (char c : s) {
     if (c == '|') r += "\\|";
+    else if (c == '<') r += "&lt;";
+    else if (c == '>') r += "&gt;";
+    else if (c == '&') r += "&amp;";
     else r += c;
   }
   return r;
@@ -224,7 +229,7 @@ void render(const Report& report, Format format, std::ostream& out) {
     case Format::md: {
       if (!report.title.empty()) out << "## " << detail::md_escape(report.title) << "\n\n";
       for (const auto& t : report.tables) detail::render_md_table(t, out);
-      for (const auto& n : report.notes) out << n << "\n\n";
+      for (const auto& n : report.notes) out << detail::md_escape(n) << "\n\n";
       out << "**Warnings:**" << (report.warnings.empty() ? " none\n" : "\n\n");
       for (const auto& w : report.warnings) out << "- " << detail::md_escape(w) << "\n";
       return;
@@ -268,10 +273,42 @@ void non_finite_paths(const nlohmann::json& j, const std::string& path, std::vec
 
 }  // namespace
 
+namespace {
+
+/// The name a note gives a non-finite number: the words before it back to the last ':' or '='
+/// and the clause before that ("Driving force: nan N by ..." -> 'Driving force'), or "" if none.
+std::string quantity_in_note(std::string_view note) {
+  std::size_t start = 0;
+  while (start <= note.size()) {
+    std::size_t end = note.find(' ', start);
+    std::string_view token = note.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+    if (detail::non_finite_text(token)) {
+      std::string_view before = note.substr(0, start);
+      while (!before.empty() && (before.back() == ' ' || before.back() == ':' || before.back() == '=')) before.remove_suffix(1);
+      const std::size_t cut = before.find_last_of(",;.(");
+      if (cut != std::string_view::npos) before.remove_prefix(cut + 1);
+      while (!before.empty() && before.front() == ' ') before.remove_prefix(1);
+      return quote(before.empty() ? note : before);
+    }
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return "";
+}
+
+}  // namespace
+
 std::vector<std::string> non_finite_quantities(const Report& report) {
   std::vector<std::string> names;
   non_finite_paths(report.json, "", names);
   for (std::string& n : names) n = fmt::format("'{}'", n);
+  // A note may carry a number too ("Driving force: nan N"): the text and Markdown reports show it.
+  for (const std::string& note : report.notes) {
+    const std::string quantity = quantity_in_note(note);
+    if (quantity.empty()) continue;
+    std::string name = quantity + " in a note";
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(std::move(name));
+  }
   for (const Table& t : report.tables)
     for (const auto& row : t.rows)
       for (std::size_t c = 0; c < row.size(); ++c) {

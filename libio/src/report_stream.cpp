@@ -191,7 +191,7 @@ std::vector<std::string> ReportStream::finish(const Report& tail) {
     case Format::md:
       out_ << "\n";
       for (const Table& t : tail.tables) detail::render_md_table(t, out_);
-      for (const auto& n : notes) out_ << n << "\n\n";
+      for (const auto& n : notes) out_ << detail::md_escape(n) << "\n\n";
       out_ << "**Warnings:**" << (warnings.empty() ? " none\n" : "\n\n");
       for (const auto& w : warnings) out_ << "- " << detail::md_escape(w) << "\n";
       break;

@@ -147,7 +147,7 @@ MapReader::MapReader(const YAML::Node& node, std::string file, std::string what)
     if (!kv.first.IsScalar())
       fail_at(mark_of(kv.first, file_), fmt::format("expected a key name in {}, found {}", what_, describe_node(kv.first)));
     if (!seen.insert(kv.first.Scalar()).second)
-      fail_at(mark_of(kv.first, file_), fmt::format("duplicate key '{}' in {}", kv.first.Scalar(), what_));
+      fail_at(mark_of(kv.first, file_), fmt::format("duplicate key {} in {}", quote(kv.first.Scalar()), what_));
   }
 }
 
@@ -284,7 +284,7 @@ void MapReader::finish() const {
               fmt::format("expected a decimal point, found a decimal comma before {} in {} (inside "
                           "{{...}} a comma separates entries: write 2.5, not 2,5)",
                           quote(k), what_));
-    fail_at(mark_of(kv.first, file_), fmt::format("unknown key '{}' in {}; expected one of: {}", k, what_,
+    fail_at(mark_of(kv.first, file_), fmt::format("unknown key {} in {}; expected one of: {}", quote(k), what_,
                                                  fmt::join(known_, ", ")));
   }
 }

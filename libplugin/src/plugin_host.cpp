@@ -3,6 +3,7 @@
 #include "plugin_stamp.hpp"
 
 #include <dlfcn.h>
+#include <sys/stat.h>
 
 #include <fmt/format.h>
 
@@ -55,6 +56,29 @@ fs::path absolute_path(const fs::path& file) {
   std::error_code ec;
   fs::path p = fs::absolute(file, ec);
   return ec ? file : p.lexically_normal();
+}
+
+/// Why a plugin whose file or folder others than its owner may write must not be loaded: anyone
+/// in that group (or anyone at all) could replace it by code that runs in every gearkit command.
+/// Empty when the file, its folder and, for a symbolic link, the link's folder are all safe (the
+/// rule ssh applies to its keys; a sticky /tmp is no exception: its files can still be added).
+std::string writable_by_others(const fs::path& file) {
+  std::error_code ec;
+  const fs::path real = fs::canonical(file, ec);
+  std::vector<fs::path> checked{ec ? file : real};
+  checked.push_back(checked.front().parent_path());
+  if (file.parent_path() != checked.back()) checked.push_back(file.parent_path());
+  for (const auto& p : checked) {
+    struct stat st{};
+    if (::stat(p.c_str(), &st) != 0) continue;  // a missing file is refused elsewhere
+    if ((st.st_mode & (S_IWGRP | S_IWOTH)) == 0) continue;
+    const bool is_file = p == checked.front();
+    return fmt::format("{} '{}' is writable by {} (mode {:04o}); refusing to load code others can replace "
+                       "(chmod go-w '{}')",
+                       is_file ? "the file" : "its folder", p.string(),
+                       (st.st_mode & S_IWOTH) ? "everyone" : "its group", st.st_mode & 07777, p.string());
+  }
+  return {};
 }
 
 }  // namespace
@@ -143,6 +167,7 @@ void PluginHost::load(const fs::path& given) {
   const fs::path file = absolute_path(given);
   std::error_code ec;
   if (!fs::exists(file, ec)) throw PluginError(file, "no such file");
+  if (const std::string why = writable_by_others(file); !why.empty()) throw PluginError(file, why);
   const auto stamp = read_plugin_stamp(file);
   if (const auto* why = std::get_if<std::string>(&stamp)) throw PluginError(file, *why);
   if (const std::string why = stamp_mismatch(std::get<PluginStamp>(stamp)); !why.empty()) throw PluginError(file, why);
@@ -202,6 +227,11 @@ void PluginHost::load_all(const std::vector<fs::path>& locations) {
   };
   for (const auto& loc : locations) {
     std::error_code ec;
+    if (loc.is_relative()) {
+      // Resolved against the working folder, it would load whatever the folder a command runs in holds.
+      failures_.emplace_back(loc, "a relative entry of the plugin path is ignored (give an absolute path)");
+      continue;
+    }
     if (fs::is_directory(loc, ec)) {
       std::vector<fs::path> files;
       for (const auto& entry : fs::directory_iterator(loc, ec))

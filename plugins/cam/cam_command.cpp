@@ -85,12 +85,14 @@ CamResult analyse(const CamModel& model, const std::string& file) {
 
 /// What a groove or the G-code needs of the cutter.
 void check_cutter(const CamModel& model, const Options& options) {
-  const char* where = options.cutter_radius_mm ? "--cutter-radius" : "the model's output.cutter_radius";
   if (model.design.follower.closure == gc::Closure::groove && model.cutter_radius_mm &&
-      *model.cutter_radius_mm > model.design.follower.roller_radius)
-    io::fail_option(where, fmt::format("a groove cam is cut from inside its groove: expected a cutter radius up to the "
-                                       "roller radius {:.6g} mm, found {:.6g} mm",
-                                       model.design.follower.roller_radius, *model.cutter_radius_mm));
+      *model.cutter_radius_mm > model.design.follower.roller_radius) {
+    const std::string why = fmt::format("a groove cam is cut from inside its groove: expected a cutter radius up to the "
+                                        "roller radius {:.6g} mm, found {:.6g} mm",
+                                        model.design.follower.roller_radius, *model.cutter_radius_mm);
+    if (options.cutter_radius_mm) io::fail_option("--cutter-radius", why);
+    io::fail_at(model.cutter_radius_mark, fmt::format("'cutter_radius': {}", why));
+  }
   if (!options.gcode.empty() && !model.cutter_radius_mm)
     io::fail_option("--gcode", "expected a cutter radius (--cutter-radius or output.cutter_radius): G-code is the cutter's path");
   if ((!options.dynamics_plot.empty() || !options.dyn.empty()) && !model.dynamics)

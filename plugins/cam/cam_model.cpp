@@ -195,6 +195,7 @@ void read_output(io::MapReader& root, CamModel& model) {
   model.follower_at = out.quantity_or("follower_at", io::Quantity::angle, "deg", 0);
   if (const auto rc = out.optional_quantity("cutter_radius", io::Quantity::length, "mm")) {
     model.cutter_radius_mm = *rc * kMm;
+    model.cutter_radius_mark = out.mark("cutter_radius");
     if (!(*model.cutter_radius_mm > 0))
       io::fail_at(out.mark("cutter_radius"),
                   fmt::format("expected a cutter radius > 0, found {:.6g} mm", *model.cutter_radius_mm));

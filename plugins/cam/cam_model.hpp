@@ -56,6 +56,7 @@ struct CamModel {
   int samples = 360;                  ///< cam angles in the report's profile points and CSV
   double follower_at = 0;             ///< cam angle of the follower in the SVG drawing [rad]
   std::optional<double> cutter_radius_mm;
+  io::SourceMark cutter_radius_mark;  ///< of output.cutter_radius in the file (line 0 if not there)
   double pivot_radius_mm = 0;         ///< oscillating: pivot boss radius, for the clearance check
   std::optional<DynamicsInput> dynamics;
   std::optional<ContactInput> contact;

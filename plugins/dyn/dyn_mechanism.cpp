@@ -21,7 +21,7 @@ gd::InertiaTable mechanism_inertia_table(const std::string& path, int intervals,
   const mechanism::Mechanism mech = mechanism::load_mechanism(path, elements);
   const kin::Model& model = mech.model;
   if (model.drivers().empty() || model.drivers().front().quantity != kin::DriverQuantity::angle)
-    io::fail_at(where, fmt::format("mechanism '{}': expected its first driver to be an angle (the load shaft)", path));
+    io::fail_at(where, fmt::format("mechanism {}: expected its first driver to be an angle (the load shaft)", io::quote(path)));
 
   std::vector<gd::BodyMass> bodies;
   bool any_mass = false;
@@ -30,7 +30,7 @@ gd::InertiaTable mechanism_inertia_table(const std::string& path, int intervals,
     any_mass = any_mass || b.mass > 0 || b.inertia > 0;
   }
   if (!any_mass)
-    io::fail_at(where, fmt::format("mechanism '{}': expected links with 'mass' or 'inertia', found none", path));
+    io::fail_at(where, fmt::format("mechanism {}: expected links with 'mass' or 'inertia', found none", io::quote(path)));
 
   kin::Data data(model);
   kin::SweepOptions options;
@@ -41,7 +41,7 @@ gd::InertiaTable mechanism_inertia_table(const std::string& path, int intervals,
   options.velocities = false;
   const kin::SweepResult sweep = kin::sweep(model, data, options);
   if (!sweep.assembled || !sweep.complete)
-    io::fail_at(where, fmt::format("mechanism '{}' cannot turn its driver through a full revolution: {}", path,
+    io::fail_at(where, fmt::format("mechanism {} cannot turn its driver through a full revolution: {}", io::quote(path),
                                    sweep.message.empty() ? "dead point" : sweep.message));
 
   std::vector<double> theta, inertia;

@@ -7,10 +7,13 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <numbers>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace gearkit::plugins::dyn {
 
@@ -181,8 +184,17 @@ void read_load(io::MapReader& root, Model& m, const mechanism::ElementTypeLookup
     // A linkage from a `gearkit kin` model file, path relative to this file.
     if (r.has("inertia_table")) io::fail_at(r.mark("mechanism"), "load: give 'mechanism' or 'inertia_table', not both");
     m.load.inertia_table_mark = r.mark("mechanism");
-    std::filesystem::path path = r.string("mechanism");
+    const std::string given = r.string("mechanism");
+    std::filesystem::path path = given;
     if (path.is_relative()) path = std::filesystem::path(r.file()).parent_path() / path;
+    // A file that cannot be read is this model's mistake: said at the value, quoted as written
+    // (the mechanism file's own errors carry its own file, line and column).
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+      io::fail_at(r.mark("mechanism"), fmt::format("'mechanism': expected a mechanism file, found the folder {}", io::quote(given)));
+    if (::access(path.c_str(), R_OK) != 0)
+      io::fail_at(r.mark("mechanism"), fmt::format("'mechanism': cannot read {}: {}", io::quote(given),
+                                                   errno == ENOENT ? "no such file" : std::strerror(errno)));
     const long long intervals = r.optional_integer("mechanism_steps").value_or(360);
     if (intervals < 36 || intervals > 36000)
       io::fail_at(r.mark("mechanism_steps"), fmt::format("'mechanism_steps': expected 36 to 36000, found {}", intervals));

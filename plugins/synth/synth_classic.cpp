@@ -112,6 +112,12 @@ void draw_dwell(const gs::DwellTask& t, const gs::DwellResult& r, io::Drawing& d
   d.texts.push_back({"linkage", r.D.x() * 1000 + size, r.D.y() * 1000 + size, 2 * size, "D"});
 }
 
+/// Refuses, at the key's file:line:column, a task value the synthesis would refuse (the library
+/// checks them too, without knowing where they came from).
+void require(bool ok, const io::MapReader& r, const std::string& key, std::string_view expected, std::string_view found) {
+  if (!ok) io::fail_at(r.mark(key), fmt::format("'{}': expected {}, found {}", key, expected, found));
+}
+
 }  // namespace
 
 Output run_crank_rocker_task(const io::YamlDocument& doc, const Overrides&) {
@@ -123,6 +129,12 @@ Output run_crank_rocker_task(const io::YamlDocument& doc, const Overrides&) {
   t.rocker = r.quantity_or("rocker", io::Quantity::length, "mm", 0.1);
   t.ground = r.optional_quantity("ground", io::Quantity::length, "mm");
   r.finish();
+  // The ranges of gs::synthesize_quick_return (gearkit/synth/quick_return.hpp).
+  require(t.swing > 0 && t.swing < pi, r, "swing", "a rocker swing between 0 and 180 deg", fmt::format("{} deg", deg(t.swing)));
+  require(t.time_ratio >= 1 && t.time_ratio < 10, r, "time_ratio", "a time ratio Q with 1 <= Q < 10",
+          fmt::format("{:g}", t.time_ratio));
+  require(t.rocker > 0, r, "rocker", "a length > 0", fmt::format("{:g} mm", t.rocker * 1000));
+  require(!t.ground || *t.ground > 0, r, "ground", "a length > 0", fmt::format("{:g} mm", t.ground.value_or(0) * 1000));
   const gs::QuickReturnResult res = gs::synthesize_quick_return(t);
   Output out;
   out.report.title = title.empty() ? fmt::format("Crank-rocker: {} deg swing, time ratio {:g}", deg(t.swing), t.time_ratio) : title;
@@ -151,6 +163,12 @@ Output run_dwell_task(const io::YamlDocument& doc, const Overrides&) {
   if (r.has("output_pivot")) t.output_pivot = read_point(r.node("output_pivot"), doc.file);
   if (const auto s = r.optional_integer("samples")) t.samples = static_cast<int>(std::clamp<long long>(*s, 0, 1 << 30));
   r.finish();
+  // The ranges of gs::synthesize_dwell (gearkit/synth/dwell.hpp).
+  require(t.dwell >= 5 * pi / 180 && t.dwell <= pi, r, "dwell", "a dwell of 5 to 180 deg of crank",
+          fmt::format("{} deg", deg(t.dwell)));
+  require(t.samples >= 72 && t.samples <= 7200, r, "samples", "72 to 7200 samples", fmt::format("{}", t.samples));
+  require(!t.output_rocker || *t.output_rocker > 0, r, "output_rocker", "a length > 0",
+          fmt::format("{:g} mm", t.output_rocker.value_or(0) * 1000));
   const gs::DwellResult res = gs::synthesize_dwell(t);
   Output out;
   out.report.title = title.empty() ? fmt::format("Single-dwell six-bar: {} deg dwell", deg(t.dwell)) : title;

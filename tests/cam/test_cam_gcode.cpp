@@ -186,6 +186,18 @@ output: {cutter_radius: 8 mm}
   r = run(gearkit() + quoted(model) + " --gcode " + quoted(nc) + " --cutter-radius 12");
   EXPECT_EQ(r.status, 2);  // a cutter wider than the groove
   EXPECT_NE(r.errors.find("up to the roller radius 10 mm, found 12 mm"), std::string::npos) << r.errors;
+  EXPECT_NE(r.errors.find("option '--cutter-radius'"), std::string::npos) << r.errors;
+  // The same cutter given in the file is refused at its place there (issue 26, section 3): the
+  // value 12 mm at line 8, column 25 of the model ("output: {cutter_radius: " is 24 characters).
+  const fs::path wide = scratch_dir() / "groove_wide.yaml";
+  std::ostringstream read;
+  read << std::ifstream(model).rdbuf();
+  std::string text = read.str();
+  text.replace(text.find("cutter_radius: 8 mm"), 19, "cutter_radius: 12 mm");
+  std::ofstream(wide) << text;
+  r = run(gearkit() + quoted(wide) + " --gcode " + quoted(nc));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.errors.find(wide.string() + ":8:25: 'cutter_radius': a groove cam"), std::string::npos) << r.errors;
   r = run(gearkit() + quoted(model) + " --gcode " + quoted(nc) + " --gcode-form spiral");
   EXPECT_EQ(r.status, 2);
 }

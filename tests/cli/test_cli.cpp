@@ -125,3 +125,53 @@ TEST(Cli, OutputFileIsWrittenAtomically) {
   expect_bad_input(bad, "option '--output': cannot write");
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
 }
+
+// Issue 26, section 2: a plugin in a folder anyone may write (or a file anyone may write) was
+// loaded silently and its constructor ran. It is now skipped with one warning line naming the
+// file and why (ssh refuses such keys alike); given with --plugin it is an error. A relative
+// entry of GEARKIT_PLUGIN_PATH, which would load what the working folder holds, is ignored.
+TEST(Cli, PluginsOthersCanWriteAreNotLoaded) {
+  const auto dir = gearkit::testing::scratch_dir("cli_plugin_modes");
+  const std::filesystem::path open_folder = dir / "open", safe = dir / "safe";
+  std::filesystem::create_directories(open_folder);
+  std::filesystem::create_directories(safe);
+  std::filesystem::copy_file(kTestPlugins + "/test-good.so", open_folder / "good.so");
+  std::filesystem::copy_file(kTestPlugins + "/test-good.so", safe / "good.so");
+  std::filesystem::permissions(open_folder, std::filesystem::perms::all);  // 0777, as in the issue
+  std::filesystem::permissions(safe, static_cast<std::filesystem::perms>(0755));
+
+  auto r = run_gearkit("hello-test", "GEARKIT_PLUGIN_PATH=" + shell_quote(open_folder.string()));
+  EXPECT_EQ(r.status, 2);  // the command does not exist without the plugin
+  EXPECT_NE(r.err.find("gearkit: warning: plugin '" + (open_folder / "good.so").string() + "': its folder '" +
+                       open_folder.string() + "' is writable by everyone (mode 0777)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("(not loaded)\n"), std::string::npos) << r.err;
+
+  // A file writable by its group (0664) in a safe folder: the same, naming the file.
+  std::filesystem::permissions(safe / "good.so", static_cast<std::filesystem::perms>(0664));
+  auto gear = run_gearkit("gear --z1 12 --z2 24 --module 3", "GEARKIT_PLUGIN_PATH=" + shell_quote(safe.string()));
+  EXPECT_EQ(gear.status, 0) << gear.err;  // other commands keep working, with one warning line
+  EXPECT_EQ(gearkit::testing::count_lines(gear.err), 1) << gear.err;
+  EXPECT_NE(gear.err.find("the file '" + (safe / "good.so").string() + "' is writable by its group (mode 0664)"),
+            std::string::npos)
+      << gear.err;
+  auto given = run_gearkit("--plugin " + shell_quote((safe / "good.so").string()) + " hello-test");
+  EXPECT_EQ(given.status, 2);
+  EXPECT_EQ(gearkit::testing::count_lines(given.err), 1) << given.err;
+  EXPECT_EQ(given.err.rfind("gearkit: option '--plugin': plugin '", 0), 0u) << given.err;
+  EXPECT_NE(given.err.find("is writable by its group"), std::string::npos) << given.err;
+
+  // Once only the owner may write, the same file loads.
+  std::filesystem::permissions(safe / "good.so", static_cast<std::filesystem::perms>(0755));
+  auto ok = run_gearkit("hello-test", "GEARKIT_PLUGIN_PATH=" + shell_quote(safe.string()));
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_TRUE(ok.err.empty()) << ok.err;
+
+  // A relative entry is ignored with a warning, even where it names a good plugin.
+  auto relative = run_gearkit("hello-test", "cd " + shell_quote(dir.string()) + " && GEARKIT_PLUGIN_PATH=safe");
+  EXPECT_EQ(relative.status, 2);
+  EXPECT_NE(relative.err.find("gearkit: warning: plugin 'safe': a relative entry of the plugin path is ignored"),
+            std::string::npos)
+      << relative.err;
+}

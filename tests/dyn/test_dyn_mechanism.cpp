@@ -109,6 +109,12 @@ TEST(DynMechanism, BadMechanismReferencesAreInputErrors) {
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("no_such_mechanism.yaml"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
+  // Issue 26, section 3: where the dyn model names it, line 5 "  mechanism: " + the value at column 14.
+  EXPECT_NE(missing.err.find("m.yaml:5:14: 'mechanism': cannot read"), std::string::npos) << missing.err;
+  const auto folder = with(dir.string());
+  EXPECT_EQ(folder.status, 2);
+  EXPECT_NE(folder.err.find("m.yaml:5:14: 'mechanism': expected a mechanism file, found the folder"), std::string::npos)
+      << folder.err;
   // A mechanism whose links carry no mass has nothing to reduce.
   std::ofstream(dir / "massless.yaml") << "mechanism: bare crank\nground: {O: [0, 0]}\n"
                                           "links:\n  crank: {points: {O: [0, 0], A: [50, 0]}}\n"

@@ -67,6 +67,14 @@ TEST(CommandLine, ErrorsNameTheOption) {
   EXPECT_NE(error_of({"a.yaml", "b.yaml"}).find("unexpected argument"), std::string::npos);
 }
 
+// Issue 26, section 3: the message named no argument and quoted a usage of 512 characters.
+TEST(CommandLine, AnUnexpectedArgumentIsNamedAndTheUsageKeptShort) {
+  EXPECT_EQ(error_of({"a.yaml", "b.yaml"}).rfind("unexpected argument 'b.yaml'; usage: gearkit test FILE", 0), 0u)
+      << error_of({"a.yaml", "b.yaml"});
+  EXPECT_EQ(error_of({"a.yaml", "--z1", "12", "c.yaml", "d.yaml"}).rfind("unexpected argument 'c.yaml';", 0), 0u)
+      << error_of({"a.yaml", "--z1", "12", "c.yaml", "d.yaml"});
+}
+
 TEST(CommandLine, StrictTurnsWarningsIntoStatus3) {
   Report r;
   r.warnings.push_back("pointed tip");

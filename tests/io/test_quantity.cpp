@@ -135,6 +135,28 @@ TEST(Quantity, UnicodeSpellingsOfTheSeeds) {
   EXPECT_THROW(parse_quantity_si("1 mm³", Quantity::length, ""), QuantityError);  // a volume
 }
 
+// Issue 26, section 3. An exponent 0 is a factor of 1 (x^0 = 1): N*m*rad^0 is N*m. U+03BC (Greek
+// mu) and U+00B5 (micro sign) look the same in every font; both are micro (SI brochure, 9th ed.,
+// table 7: the prefix symbol is the Greek letter mu). No-break spaces (U+00A0, U+202F) and the
+// thin space (U+2009) that word processors put between a number and its unit are spaces.
+TEST(Quantity, ZeroExponentGreekMuAndNoBreakSpaces) {
+  EXPECT_DOUBLE_EQ(parse_quantity_si("36.6 N*m*rad^0", Quantity::torque, ""), 36.6);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("2 kg*m^2*s^0", Quantity::moment_of_inertia, ""), 2);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("5 \u03bcm", Quantity::length, "mm"), 5e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("5 \u00b5m", Quantity::length, "mm"), 5e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("9\u00a0mm", Quantity::length, ""), 0.009);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("9\u202fmm", Quantity::length, ""), 0.009);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("\u00a09 mm\u00a0", Quantity::length, ""), 0.009);
+  EXPECT_DOUBLE_EQ(parse_quantity_si("20\u2009N\u00b7m", Quantity::torque, ""), 20);
+  // A no-break space between two units is refused as a space is, and shown as one plainly.
+  try {
+    parse_quantity_si("9 mm\u00a0mm", Quantity::length, "");
+    FAIL() << "accepted two units";
+  } catch (const QuantityError& e) {
+    EXPECT_NE(std::string(e.what()).find("between units"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Quantity, TypedBoostUnitsFrontEnds) {
   namespace io = gearkit::io;
   EXPECT_DOUBLE_EQ(io::parse<io::Length>("9").value(), 0.009);
@@ -179,6 +201,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Malformed{"9 m^", Quantity::length, "exponent"},
                       Malformed{"9 m^x", Quantity::length, "exponent"},
                       Malformed{"9 m^9", Quantity::length, "exponent"},
+                      Malformed{"9 m^-5", Quantity::length, "exponent"},
                       Malformed{"9 m/", Quantity::length, "expected a unit"},
                       Malformed{"9 * m", Quantity::length, "expected a unit symbol"},
                       Malformed{"9 mm mm", Quantity::length, "between units"},

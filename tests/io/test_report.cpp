@@ -55,6 +55,26 @@ TEST(Report, MarkdownEscapesPipes) {
   EXPECT_NE(s.find("- undercut on gear 1"), std::string::npos);
 }
 
+// Issue 26, section 3: Markdown renders inline HTML, so a name "<script>" in a title, a cell, a
+// note or a warning must reach the page as text (CommonMark 0.30, section 6.6 "Raw HTML"; the
+// entities &lt; &gt; &amp; render as the characters themselves, section 2.5).
+TEST(Report, MarkdownEscapesHtmlInEveryPart) {
+  Report r;
+  r.title = "<script>alert(1)</script>";
+  Table t{"<b>gears</b>", {"name", "value"}, {}};
+  t.add_row({"<img src=x onerror=y>", "1 & 2"});
+  r.tables.push_back(t);
+  r.notes.push_back("link <a href=x>");
+  r.warnings.push_back("gear '<script>' undercut");
+  const std::string s = render(r, Format::md);
+  EXPECT_EQ(s.find('<'), std::string::npos) << s;
+  EXPECT_EQ(s.find('>'), std::string::npos) << s;
+  EXPECT_NE(s.find("## &lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos) << s;
+  EXPECT_NE(s.find("| &lt;img src=x onerror=y&gt; | 1 &amp; 2 |"), std::string::npos) << s;
+  EXPECT_NE(s.find("link &lt;a href=x&gt;"), std::string::npos) << s;
+  EXPECT_NE(s.find("- gear '&lt;script&gt;' undercut"), std::string::npos) << s;
+}
+
 TEST(Report, ParseFormat) {
   EXPECT_EQ(parse_format("json"), Format::json);
   EXPECT_EQ(parse_format("md"), Format::md);

@@ -230,3 +230,32 @@ TEST(PluginHost, DefaultLocationsHonourTheEnvironment) {
   EXPECT_EQ(locs[1], "/b/c.so");
   EXPECT_EQ(locs[2], "/opt/gk/lib/gearkit/plugins");
 }
+
+// Issue 26, section 2: code others can replace is never loaded (the file, its folder, and the
+// folder of a link to it, writable by the group or by everyone), and a relative location of the
+// search path is not searched.
+TEST(PluginHost, PluginsWritableByOthersAndRelativeLocationsAreRefused) {
+  const fs::path scratch = gearkit::testing::scratch_dir("plugin_modes");
+  const fs::path safe = scratch / "safe", open = scratch / "open";
+  fs::create_directories(safe);
+  fs::create_directories(open);
+  fs::permissions(safe, static_cast<fs::perms>(0755));
+  fs::permissions(open, static_cast<fs::perms>(0775));
+  fs::copy_file(plugin("good"), safe / "good.so");
+  fs::permissions(safe / "good.so", static_cast<fs::perms>(0646));
+  PluginHost host(builtins());
+  EXPECT_TRUE(contains(load_error(host, safe / "good.so"), "the file '" + (safe / "good.so").string() +
+                                                               "' is writable by everyone (mode 0646)"));
+  fs::permissions(safe / "good.so", static_cast<fs::perms>(0755));
+  fs::create_symlink(safe / "good.so", open / "link.so");  // a safe file, reached from an open folder
+  EXPECT_TRUE(contains(load_error(host, open / "link.so"), "its folder '" + open.string() +
+                                                               "' is writable by its group (mode 0775)"));
+  EXPECT_TRUE(host.plugins().empty());
+  host.load(safe / "good.so");
+  EXPECT_EQ(host.plugins().size(), 1u);
+
+  PluginHost searching(builtins());
+  searching.load_all({"relative/folder"});
+  ASSERT_EQ(searching.failures().size(), 1u);
+  EXPECT_TRUE(contains(searching.failures()[0].reason(), "a relative entry of the plugin path is ignored"));
+}

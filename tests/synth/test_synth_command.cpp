@@ -194,6 +194,27 @@ TEST(SynthCommand, BadInputIsOneLine) {
   expect_bad_input(run_gearkit("synth dwell " + example("dwell.yaml") + " --mechanism /nonexistent-dir/x.yaml"), "--mechanism");
 }
 
+// Issue 26, section 3: a task value out of the synthesis's range named only the file. Each is now
+// refused at its value's line and column (docs/synthesis.md gives the ranges: 1 <= Q < 10, a swing
+// under 180 deg, a dwell of 5 to 180 deg, 72 to 7200 samples).
+TEST(SynthCommand, TaskValuesOutOfRangeSayWhere) {
+  const fs::path q = write_task("q12.yaml", "swing: 45 deg\ntime_ratio: 12\nrocker: 100 mm\n");
+  expect_bad_input(run_gearkit("synth crank-rocker " + shell_quote(q.string())),
+                   "q12.yaml:2:13: 'time_ratio': expected a time ratio Q with 1 <= Q < 10, found 12");
+  const fs::path slow = write_task("q09.yaml", "swing: 45 deg\ntime_ratio: 0.9\nrocker: 100 mm\n");
+  expect_bad_input(run_gearkit("synth crank-rocker " + shell_quote(slow.string())), "q09.yaml:2:13: 'time_ratio'");
+  const fs::path swing = write_task("swing.yaml", "rocker: 100 mm\nswing: 200 deg\n");
+  expect_bad_input(run_gearkit("synth crank-rocker " + shell_quote(swing.string())),
+                   "swing.yaml:2:8: 'swing': expected a rocker swing between 0 and 180 deg, found 200.000 deg");
+  const fs::path dwell = write_task("dwell4.yaml", "four_bar: {ground: 100 mm, crank: 30 mm, coupler: 100 mm, rocker: 90 mm, "
+                                                   "coupler_point: [60 mm, 45 mm]}\ndwell: 4 deg\n");
+  expect_bad_input(run_gearkit("synth dwell " + shell_quote(dwell.string())), "dwell4.yaml:2:8: 'dwell': expected a dwell");
+  const fs::path samples = write_task("samples.yaml", "four_bar: {ground: 100 mm, crank: 30 mm, coupler: 100 mm, rocker: 90 mm, "
+                                                      "coupler_point: [60 mm, 45 mm]}\nsamples: 10\n");
+  expect_bad_input(run_gearkit("synth dwell " + shell_quote(samples.string())),
+                   "samples.yaml:2:10: 'samples': expected 72 to 7200 samples, found 10");
+}
+
 TEST(SynthCommand, JsonNumbersCarryNoConversionNoise) {
   // Issue 19: the target 17.66 mm came back as 17.660000000000004 after mm -> m -> mm; values are
   // written to 12 significant digits, as the cam command writes them.

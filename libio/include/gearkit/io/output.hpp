@@ -29,6 +29,13 @@ std::vector<std::string> input_files();
 /// removes those whose process no longer runs (left by a kill).
 inline constexpr std::string_view kTemporarySuffix = ".gearkit-tmp";
 
+/// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove every temporary an
+/// OutputSet has open, then end the process by the same signal (its default action: the exit
+/// status still says which signal). A signal ignored when this is called stays ignored. Call it
+/// once, at the start of main(); without it a signal leaves the temporaries for the next run.
+/// SIGKILL cannot be caught: what it leaves is described in docs/cli.md ("Output files").
+void remove_temporaries_on_signals();
+
 /// A set of pending outputs, committed all together or not at all.
 ///
 /// Destinations: a path (written through symlinks to their target, keeping the target's

@@ -69,7 +69,8 @@ class PluginHost final : public HostServices {
   PluginHost& operator=(const PluginHost&) = delete;
 
   /// Loads one plugin file (a path; a bare name is relative to the working directory).
-  /// @throws PluginError if the file is missing or not a regular file, is not a gearkit plugin
+  /// @throws PluginError if the file is missing, writable by its group or by everyone (so is its
+  ///         folder, or the folder of a symbolic link to it), not a regular file, is not a gearkit plugin
   ///         for this machine (no stamp), was built for another API version or ABI, lacks a
   ///         gearkit symbol, registers nothing valid (an empty or built-in name, a null
   ///         function, an element type of another element ABI), fails in registration, has
@@ -80,7 +81,8 @@ class PluginHost final : public HostServices {
   /// Loads every `*.so` in `locations` (a folder is scanned in name order, a file loaded).
   /// Copies of an already loaded plugin further down the path are skipped; other failures
   /// are added to failures(), one per file, and do not stop the scan. Folders that do not
-  /// exist are skipped silently (the install folder is absent from a build tree).
+  /// exist are skipped silently (the install folder is absent from a build tree); a relative
+  /// location is not searched and is added to failures().
   void load_all(const std::vector<std::filesystem::path>& locations);
 
   /// The files load_all could not load, with the reason, in the order met.
