@@ -245,10 +245,29 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return previous[b.size()];
 }
 
-std::optional<std::string> nearest_option(std::string_view typed, const po::options_description& desc) {
+namespace {
+
+/// The word of a typed option: "--tabel=x" -> "tabel".
+std::string_view typed_word(std::string_view typed) {
   const std::string_view name = typed.substr(std::min(typed.size(), typed.find_first_not_of('-')));
-  const std::size_t eq = name.find('=');
-  const std::string_view word = name.substr(0, eq);
+  return name.substr(0, name.find('='));
+}
+
+/// The options whose name begins with what was typed ("--helix" -> --helix-angle,
+/// --helix-modification), for an unknown option that no single name is near.
+std::vector<std::string> options_extending(std::string_view typed, const po::options_description& desc) {
+  const std::string_view word = typed_word(typed);
+  std::vector<std::string> names;
+  if (word.size() < 2) return names;
+  for (const auto& option : desc.options())
+    if (!option->long_name().empty() && option->long_name().starts_with(word)) names.push_back("--" + option->long_name());
+  return names;
+}
+
+}  // namespace
+
+std::optional<std::string> nearest_option(std::string_view typed, const po::options_description& desc) {
+  const std::string_view word = typed_word(typed);
   if (word.size() < 2) return std::nullopt;  // "-x": too short to say what was meant
   const std::size_t threshold = std::max<std::size_t>(1, word.size() / 3);
   std::optional<std::string> nearest;
@@ -294,11 +313,16 @@ std::string option_error_message(const po::error& e, const po::options_descripti
   if (dynamic_cast<const po::required_option*>(&e)) return fmt::format("{}: expected it (it is required), found none", where);
   if (dynamic_cast<const po::multiple_values*>(&e)) return fmt::format("{}: expected one value, found several", where);
   if (dynamic_cast<const po::unknown_option*>(&e)) {
-    const std::optional<std::string> meant = nearest_option(option, desc);
+    std::vector<std::string> meant;
+    if (const std::optional<std::string> nearest = nearest_option(option, desc)) meant.push_back(*nearest);
+    else meant = options_extending(option, desc);  // several begin with it: name them all, up to four
+    std::vector<std::string> quoted;
+    for (const std::string& m : meant) quoted.push_back(quote(m));
     // Boost names "--tabel=x" with its value: the option is the part before '='.
     return fmt::format("option {}: expected an option listed by --help, found an unknown one{}",
                        quote(option.substr(0, option.find('='))),
-                       meant ? fmt::format("; did you mean {}?", quote(*meant)) : std::string());
+                       !meant.empty() && meant.size() <= 4 ? fmt::format("; did you mean {}?", fmt::join(quoted, " or "))
+                                                           : std::string());
   }
   if (const auto* ambiguous = dynamic_cast<const po::ambiguous_option*>(&e)) {
     std::vector<std::string> names;

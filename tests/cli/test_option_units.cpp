@@ -82,7 +82,7 @@ TEST(OptionUnits, AnAbbreviatedOptionIsRefusedWithTheWholeName) {
   expect_refused(run_gearkit(pair + "--modlue 3"),
                  "option '--modlue': expected an option listed by --help, found an unknown one; did you mean '--module'?");
   expect_refused(run_gearkit(pair + "--module 3 --helix 12"),
-                 "option '--helix': expected an option listed by --help, found an unknown one; did you mean '--helix-angle'?");
+                 "option '--helix': expected an option listed by --help, found an unknown one; did you mean '--helix-angle' or '--helix-modification'?");
   expect_refused(run_gearkit(pair + "--module 3 --frobnicate 12"),
                  "option '--frobnicate': expected an option listed by --help, found an unknown one");
   expect_refused(run_gearkit(kTrain + "--input sun=1450rpm --mesh-eff 0.9"),

@@ -252,3 +252,20 @@ TEST(CommandLine, TheStyleHasNoGuessing) {
   EXPECT_EQ(command_line_style() & po::command_line_style::allow_guessing, 0);
   EXPECT_NE(command_line_style() & po::command_line_style::allow_long, 0);
 }
+
+// "--helix" once began only --helix-angle; with --helix-modification it begins two names, and the
+// message names both rather than none (nearest_option stays silent: no single name is meant).
+TEST(CommandLine, TheBeginningOfSeveralNamesIsAnsweredWithAllOfThem) {
+  po::options_description desc("gear");
+  desc.add_options()("pin-diameter1", po::value<std::string>(), "D1")("pin-diameter2", po::value<std::string>(), "D2");
+  po::positional_options_description none;
+  po::variables_map vm;
+  std::ostringstream out;
+  try {
+    parse_command_line({"--pin", "3"}, desc, none, vm, "gearkit test", out);
+    ADD_FAILURE() << "an unknown option was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "option '--pin': expected an option listed by --help, found an unknown one; "
+                                     "did you mean '--pin-diameter1' or '--pin-diameter2'?");
+  }
+}

@@ -135,7 +135,7 @@ TEST(TrainRating, UserDefinedMaterialMap) {
 // (the planets' forces balance) and the sun body twisted by all 3 planets' torque, B* = 3:
 // f_sh = F_m/b 0.023 * 3 (b/d_1)^2, b = 20 mm, d_1 = 21 * 1.75 = 36.75 mm.
 TEST(TrainRating, SunFaceLoadFollowsTheSunModel) {
-  const CliRun r = run("'" + kFile + "' --torque sun=40 --rate --format json");
+  const CliRun r = run("'" + kFile + "' --torque sun=40N*m --rate --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto sun = nlohmann::json::parse(r.out)["rating"]["meshes"][0];
   ASSERT_TRUE(sun.contains("face_load")) << sun.dump();
@@ -153,7 +153,7 @@ TEST(TrainRating, SunFaceLoadFollowsTheSunModel) {
   const double c = sun["c_gamma_beta"].get<double>();
   const double K = 1.0 + c * F_betay / (2.0 * F_m_per_b);
   EXPECT_NEAR(f["K_Hbeta"].get<double>(), K <= 2.0 ? K : std::sqrt(2.0 * c * F_betay / F_m_per_b), 1e-9);
-  const CliRun text = run("'" + kFile + "' --torque sun=40 --rate");
+  const CliRun text = run("'" + kFile + "' --torque sun=40N*m --rate");
   EXPECT_NE(text.out.find("Mesh 's-p': face load by the sun model (3 planets, B* = 3"), std::string::npos) << text.out;
   // The planet-ring mesh keeps the pinion (planet) on its pin, centred: B* = 1, K' = 0, no face_load entry.
   EXPECT_FALSE(nlohmann::json::parse(r.out)["rating"]["meshes"][1].contains("face_load"));
@@ -161,12 +161,12 @@ TEST(TrainRating, SunFaceLoadFollowsTheSunModel) {
 
 // A mesh's own `rating:` takes the keys of a gear-pair file (factors, deviations, face_load, ...).
 TEST(TrainRating, PerMeshRatingInputs) {
-  const CliRun base = run("'" + kFile + "' --torque sun=40 --rate --format json");
+  const CliRun base = run("'" + kFile + "' --torque sun=40N*m --rate --format json");
   ASSERT_EQ(base.status, 0) << base.err;
   const auto b = nlohmann::json::parse(base.out)["rating"]["meshes"];
   const std::string file = edited("mesh_rating.yaml", "- {gears: [s, p], carrier: carrier}",
                                   "- {gears: [s, p], carrier: carrier, rating: {factors: {K_Hbeta: 1.3}, application_factor: 1.5}}");
-  const CliRun r = run("'" + file + "' --torque sun=40 --rate --format json");
+  const CliRun r = run("'" + file + "' --torque sun=40N*m --rate --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto m = nlohmann::json::parse(r.out)["rating"]["meshes"];
   EXPECT_DOUBLE_EQ(m[0]["factors"]["K_Hbeta"].get<double>(), 1.3);
@@ -176,7 +176,7 @@ TEST(TrainRating, PerMeshRatingInputs) {
   // (Eq. 38) drops by 1.33 F_m/b 0.023 (3 - 1) (b/d_1)^2.
   const std::string shaft = edited("sun_shaft.yaml", "- {gears: [s, p], carrier: carrier}",
                                    "- {gears: [s, p], carrier: carrier, rating: {face_load: {model: pinion-shaft}}}");
-  const CliRun s = run("'" + shaft + "' --torque sun=40 --rate --format json");
+  const CliRun s = run("'" + shaft + "' --torque sun=40N*m --rate --format json");
   ASSERT_EQ(s.status, 0) << s.err;
   const auto sun = nlohmann::json::parse(s.out)["rating"]["meshes"][0];
   const auto& f = sun["factors"];
@@ -188,5 +188,5 @@ TEST(TrainRating, PerMeshRatingInputs) {
   int line = 0;
   const std::string bad = edited("mesh_quality.yaml", "- {gears: [s, p], carrier: carrier}",
                                  "- {gears: [s, p], carrier: carrier, rating: {face_load: {arrangement: z}}}", &line);
-  expect_error_at(run("'" + bad + "' --torque sun=40 --rate"), "mesh_quality.yaml:" + std::to_string(line) + ":");
+  expect_error_at(run("'" + bad + "' --torque sun=40N*m --rate"), "mesh_quality.yaml:" + std::to_string(line) + ":");
 }
