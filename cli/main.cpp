@@ -171,7 +171,9 @@ po::variables_map parse_global_options(const std::vector<std::string>& args, con
     po::store(po::command_line_parser(args).options(global).style(gearkit::io::command_line_style()).run(), vm);
     po::notify(vm);
   } catch (const po::error& e) {
-    throw gearkit::io::InputError(fmt::format("{}; see 'gearkit --help'", gearkit::io::option_error_message(e, global, args)));
+    // A suggestion ends in '?': "did you mean '--version'? See ..." reads better than "?; see".
+    const std::string reason = gearkit::io::option_error_message(e, global, args);
+    throw gearkit::io::InputError(fmt::format("{}{} 'gearkit --help'", reason, reason.ends_with('?') ? " See" : "; see"));
   }
   return vm;
 }

@@ -10,6 +10,7 @@
 #include "gear_pair_file.hpp"
 #include "gear_rating_options.hpp"
 #include "gear_rating_report.hpp"
+#include "gear_rating_yaml.hpp"
 #include "gear_report.hpp"
 #include "gear_size.hpp"
 #include "gear_tolerance_options.hpp"
@@ -128,12 +129,9 @@ void root_allowances(const Request& q, const gg::GearPairResult& table, const gg
   if (!q.file || !rating.quality || q.options.input.A_sn1 != 0.0 || q.options.input.A_sn2 != 0.0) return;
   const int grade = *rating.quality;
   if (grade < gg::min_grade(rating.iso1328_edition) || grade > gg::max_grade(rating.iso1328_edition)) return;  // the rating names it
-  gg::InspectionInput ii;
-  ii.grade = {*rating.quality, *rating.quality};
-  ii.edition = rating.iso1328_edition;
   try {
-    const gg::InspectionResult by_grade = gg::compute_inspection(q.options.input, table, ii);
-    for (int i = 0; i < 2; ++i) rating.A_sne[i] = by_grade.gear[i].allowances.A_sne;
+    const auto A_sne = upper_allowances_of_grade(q.options.input, table, grade, rating.iso1328_edition);
+    for (int i = 0; i < 2; ++i) rating.A_sne[i] = A_sne[i];
   } catch (const gg::GeometryError& e) {
     io::fail_at(mark_for_field(*q.file, "quality"), fmt::format("the tooth thickness allowances of the grade (ISO/TR 10064-2), which the "
                                                                 "root rating uses, cannot be found: {}; give allowance1 and allowance2", e.what()));

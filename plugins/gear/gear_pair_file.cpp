@@ -29,15 +29,7 @@ double mm(MapReader& r, const char* key, double default_mm) { return r.quantity_
 void read_tools_and_tips(MapReader& r, PairFile& f) {
   gg::GearPairInput& g = f.geometry;
   for (int i = 0; i < 2; ++i) {
-    const char* key = i == 0 ? "rack1" : "rack2";
-    if (auto rack = r.optional_node(key)) {
-      MapReader k(*rack, r.file(), key);
-      gg::Rack tool{g.pressure_angle, k.optional_number("addendum").value_or(g.h_aP), k.optional_number("dedendum").value_or(g.h_fP),
-                    k.optional_number("root_radius").value_or(g.rho_fP)};
-      g.tool[i] = tool;
-      f.marks[i == 0 ? "tool1" : "tool2"] = k.mark();
-      k.finish();
-    }
+    if (auto tool = read_tool(r, i, g, f.marks)) g.tool[i] = *tool;
     const std::string n = std::to_string(i + 1);
     for (const auto& [name, field, target] : {std::tuple{"tip_diameter" + n, "d_a" + n, &g.d_a}, std::tuple{"root_diameter" + n, "d_f" + n, &g.d_f}}) {
       if (auto d = r.optional_quantity(name.c_str(), Quantity::length, "mm")) (*target)[i] = *d * 1000.0;

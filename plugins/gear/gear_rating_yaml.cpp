@@ -3,6 +3,7 @@
 
 #include "gear_rating_options.hpp"
 
+#include <gearkit/gear/inspection.hpp>
 #include <gearkit/io/error.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
@@ -164,6 +165,27 @@ void read_rating_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, i
     marks["factor"] = fr.mark();
     fr.finish();
   }
+}
+
+std::optional<gg::Rack> read_tool(MapReader& r, int i, const gg::GearPairInput& pair, std::map<std::string, io::SourceMark>& marks) {
+  const char* key = i == 0 ? "rack1" : "rack2";
+  const auto node = r.optional_node(key);
+  if (!node) return std::nullopt;
+  MapReader k(*node, r.file(), key);
+  gg::Rack tool{pair.pressure_angle, k.optional_number("addendum").value_or(pair.h_aP), k.optional_number("dedendum").value_or(pair.h_fP),
+                k.optional_number("root_radius").value_or(pair.rho_fP)};
+  marks[i == 0 ? "tool1" : "tool2"] = k.mark();
+  k.finish();
+  return tool;
+}
+
+std::array<double, 2> upper_allowances_of_grade(const gg::GearPairInput& pair, const gg::GearPairResult& table, int grade,
+                                                gg::Iso1328Edition edition) {
+  gg::InspectionInput ii;
+  ii.grade = {grade, grade};
+  ii.edition = edition;
+  const gg::InspectionResult by_grade = gg::compute_inspection(pair, table, ii);
+  return {by_grade.gear[0].allowances.A_sne, by_grade.gear[1].allowances.A_sne};
 }
 
 }  // namespace gearkit::plugins::gear

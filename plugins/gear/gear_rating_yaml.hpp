@@ -9,7 +9,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace gearkit::plugins::gear {
@@ -41,5 +43,19 @@ void read_face_load(io::MapReader& r, gearkit::gear::FaceLoadInput& f);
 /// where each RatingInput field was written. Does not call r.finish().
 /// @throws io::InputError at the offending key.
 void read_rating_keys(io::MapReader& r, gearkit::gear::RatingInput& in, std::map<std::string, io::SourceMark>& marks);
+
+/// Reads the tool of gear `i` (0 or 1) from the mapping `rack1:` or `rack2:` of `r` (keys addendum,
+/// dedendum, root_radius: h_aP*, h_fP*, rho_fP*; a key not given keeps `pair`'s rack), or nothing
+/// when the key is absent. `marks` gets "tool1"/"tool2".
+/// @throws io::InputError at the offending key for a value that is not a number or an unknown key.
+std::optional<gearkit::gear::Rack> read_tool(io::MapReader& r, int i, const gearkit::gear::GearPairInput& pair,
+                                             std::map<std::string, io::SourceMark>& marks);
+
+/// The upper tooth thickness allowances A_sne (mm, per gear) that ISO/TR 10064-2 gives `grade` of
+/// `edition` for the pair, as the inspection computes them: the allowances the root rating's
+/// generating shift x_E uses when none is given (one source for inspection and rating).
+/// @throws gearkit::gear::GeometryError when the allowances cannot be found for the pair.
+std::array<double, 2> upper_allowances_of_grade(const gearkit::gear::GearPairInput& pair, const gearkit::gear::GearPairResult& table,
+                                                int grade, gearkit::gear::Iso1328Edition edition);
 
 }  // namespace gearkit::plugins::gear

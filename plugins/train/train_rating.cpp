@@ -193,14 +193,30 @@ bool is_sun_mesh(const gt::TrainModel& model, const MeshPlan& p) {
 // The mesh's own `rating:` keys over the file's `rating:` section (plugins/gear read_rating_keys),
 // and the face-load model: a sun mesh takes FaceLoadModel::sun (the sun twisted by all planets, no
 // bending by a bearing span; docs/rating.md) unless its `face_load:` names a model or a shaft.
+// The mesh's tools and upper thickness allowances: gear 1 is the mesh's pinion (plan_of).
+struct MeshTools {
+  std::array<std::optional<gg::Rack>, 2> tool;
+  std::array<std::optional<double>, 2> A_sne;  ///< mm
+};
+
+void read_mesh_tools(io::MapReader& r, const gg::GearPairInput& pair, MeshTools& t, std::map<std::string, io::SourceMark>& marks) {
+  for (int i = 0; i < 2; ++i) {
+    t.tool[i] = plugins::gear::read_tool(r, i, pair, marks);
+    const std::string key = i == 0 ? "allowance1" : "allowance2";
+    if (r.has(key)) t.A_sne[i] = r.quantity(key, io::Quantity::length, "mm") * 1000.0;
+  }
+}
+
 std::map<std::string, io::SourceMark> read_mesh_rating(const gt::TrainModel& model, const RatingData& d, gt::MeshId k,
-                                                       const MeshPlan& p, gg::RatingInput& in) {
+                                                       const MeshPlan& p, const gg::GearPairInput& pair, gg::RatingInput& in,
+                                                       MeshTools& tools) {
   std::map<std::string, io::SourceMark> marks;
   in.face_load.planets = p.planets;
   bool model_given = false;
   if (k < d.meshes.size() && d.meshes[k].node) {
     io::MapReader r(d.meshes[k].node, d.meshes[k].file, "mesh rating");
     plugins::gear::read_rating_keys(r, in, marks);
+    read_mesh_tools(r, pair, tools, marks);
     if (!r.has("iso1328_edition")) in.iso1328_edition = d.base.iso1328_edition;
     if (auto K_A = r.optional_number("application_factor")) {
       in.K_A = *K_A;
@@ -213,10 +229,32 @@ std::map<std::string, io::SourceMark> read_mesh_rating(const gt::TrainModel& mod
   return marks;
 }
 
+// The upper allowances of the root rating's generating shift: the mesh's allowance1/2, else those
+// ISO/TR 10064-2 gives the mesh's grade (as `gearkit gear` does for a pair file with a grade).
+// Where the grade gives none (the standard's ranges), the nominal shift is used and a warning says so.
+std::string root_allowances(const std::string& mesh, const gg::GearPairInput& pair, const gg::GearPairResult& table,
+                            const MeshTools& tools, gg::RatingInput& in, std::vector<std::string>& warnings) {
+  if (tools.A_sne[0] || tools.A_sne[1]) {
+    for (int i = 0; i < 2; ++i) in.A_sne[i] = tools.A_sne[i].value_or(0.0);
+    return "the mesh's allowance1/2";
+  }
+  if (!in.quality || *in.quality < gg::min_grade(in.iso1328_edition) || *in.quality > gg::max_grade(in.iso1328_edition)) return {};
+  try {
+    const auto A_sne = plugins::gear::upper_allowances_of_grade(pair, table, *in.quality, in.iso1328_edition);
+    for (int i = 0; i < 2; ++i) in.A_sne[i] = A_sne[i];
+    return fmt::format("ISO/TR 10064-2 for grade {}", *in.quality);
+  } catch (const gg::GeometryError& e) {
+    warnings.push_back(fmt::format("mesh '{}': the tooth root is rated without thickness allowances: ISO/TR 10064-2 gives none "
+                                   "for its grade ({}); give allowance1 and allowance2 in its rating", mesh, e.what()));
+  }
+  return {};
+}
+
 struct MeshRating {
   std::string mesh, pinion, wheel;
   gg::RatingInput input;
   gg::PairRating rating;
+  std::string allowances_from = {};  ///< where input.A_sne came from, for the report's note
 };
 
 // One mesh: its pair, torques per planet, relative speed, cycles per turn and load sharing.
@@ -230,9 +268,15 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
     warnings.push_back(fmt::format("mesh '{}' carries no load or does not turn relative to its carrier: not rated", mesh.name));
     return std::nullopt;
   }
-  MeshRating m{mesh.name, g1.name, g2.name, d.base, {}};
+  MeshRating m{mesh.name, g1.name, g2.name, d.base, {}, {}};
   gg::RatingInput& in = m.input;
-  const std::map<std::string, io::SourceMark> mesh_marks = read_mesh_rating(model, d, k, p, in);
+  // An idler or a planet between two meshes is bent both ways: the default a mesh's
+  // reversed_bending1/2 may override, so it is set before the mesh's keys are read.
+  in.reversed_bending = {meshes_of(model, p.pinion) > 1, meshes_of(model, p.wheel) > 1};
+  gg::GearPairInput pair = pair_of(model, d, p);
+  MeshTools tools;
+  const std::map<std::string, io::SourceMark> mesh_marks = read_mesh_rating(model, d, k, p, pair, in, tools);
+  pair.tool = tools.tool;
   in.T_1 = T_pinion_total / p.planets;
   in.n_1 = n_pinion_rpm;
   in.material = {material_of(d, g1), material_of(d, g2)};
@@ -240,10 +284,10 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
   // A gear on a planet meets this mesh once per relative turn; a gear on the carrier's axis meets
   // every planet: N cycles per relative turn.
   in.cycles_per_rev = {model.is_planet(g1.member) ? 1.0 : p.planets, model.is_planet(g2.member) ? 1.0 : p.planets};
-  in.reversed_bending = {meshes_of(model, p.pinion) > 1, meshes_of(model, p.wheel) > 1};
-  const gg::GearPairInput pair = pair_of(model, d, p);
   try {
-    m.rating = gg::rate_gear_pair(pair, gg::compute_gear_pair(pair), in);
+    const gg::GearPairResult table = gg::compute_gear_pair(pair);
+    m.allowances_from = root_allowances(mesh.name, pair, table, tools, in, warnings);
+    m.rating = gg::rate_gear_pair(pair, table, in);
   } catch (const gg::GeometryError& e) {
     io::fail_at(gear_data(d, g1).mark, fmt::format("mesh '{}': {}", mesh.name, e.what()));
   } catch (const gg::RatingError& e) {
@@ -285,6 +329,11 @@ void report_meshes(io::Report& report, const std::vector<MeshRating>& rated) {
                                          "K_Hbeta = {:.3f} (docs/rating.md, \"Face load factor\").",
                                          m.mesh, m.input.face_load.planets, m.rating.B_star, m.rating.f_sh, m.rating.K_Hbeta));
     }
+    if (m.input.method == gg::RatingMethod::iso6336 && m.input.root_shift == gg::RootShift::generating && (m.input.A_sne[0] || m.input.A_sne[1]))
+      report.notes.push_back(fmt::format("Mesh '{}': tooth root (Y_F, Y_S) at the generating shift x_E = x + A_sne/(2 m_n tan alpha_n), "
+                                         "upper allowances A_sne = {:.4f} / {:.4f} mm ({}).",
+                                         m.mesh, m.input.A_sne[0].value_or(0.0), m.input.A_sne[1].value_or(0.0),
+                                         m.allowances_from));
   }
   report.tables.push_back(std::move(t));
   if (!weakest_text.empty()) report.notes.push_back("Weakest: " + weakest_text + ".");

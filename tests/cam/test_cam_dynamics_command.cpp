@@ -339,6 +339,13 @@ TEST(CamDynamicsCommand, NoPreloadNeededIsZeroNotRounding) {
   std::string value;
   cells >> value;
   EXPECT_EQ(value, "0") << text.output.substr(row, 80);
+  // On the dwells the spring is unloaded, without preload, and nothing accelerates: the least
+  // contact force is exactly 0 N by hand, shown as 0 rather than its rounding residue.
+  EXPECT_EQ(j["dynamics"]["contact_force_min_N"].get<double>(), 0.0) << j["dynamics"];
+  const auto least = text.output.find("least contact force [N]");
+  ASSERT_NE(least, std::string::npos);
+  const std::string least_row = text.output.substr(least, text.output.find('\n', least) - least);
+  EXPECT_EQ(least_row.find("e-"), std::string::npos) << least_row;  // no 3.2e-14
   // Below the hand limit the rate alone does not hold, and a preload is needed.
   const auto soft = write_model("softpreload.yaml", kDoubleDwell + "dynamics: {mass: 7.5 kg, min_contact_force: 0 N, "
                                                                    "spring_rate: 1500 N/m}\n");

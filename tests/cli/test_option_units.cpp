@@ -91,5 +91,5 @@ TEST(OptionUnits, AnAbbreviatedOptionIsRefusedWithTheWholeName) {
   // The global options too.
   const RunResult global = run_gearkit("--versoin");
   EXPECT_EQ(global.status, 2) << global.err;
-  EXPECT_NE(global.err.find("did you mean '--version'?"), std::string::npos) << global.err;
+  EXPECT_NE(global.err.find("did you mean '--version'? See 'gearkit --help'"), std::string::npos) << global.err;
 }

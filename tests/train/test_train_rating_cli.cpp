@@ -190,3 +190,51 @@ TEST(TrainRating, PerMeshRatingInputs) {
                                  "- {gears: [s, p], carrier: carrier, rating: {face_load: {arrangement: z}}}", &line);
   expect_error_at(run("'" + bad + "' --torque sun=40N*m --rate"), "mesh_quality.yaml:" + std::to_string(line) + ":");
 }
+
+// Issue 25: a mesh's tools and thickness allowances, and one source of the allowances in both
+// commands. The sun mesh s-p (z 21/43, m 1.75 mm, x 0.4380/0.0426, b 20 mm, grade 6) rated in the
+// train and the same pair rated by `gearkit gear` with the same upper allowances give the same
+// tooth-form factors Y_F, Y_S (they depend on the geometry and the generating shift only).
+TEST(TrainRating, MeshToolsAndAllowancesAreThoseOfAGearPair) {
+  const auto Y_of = [](const nlohmann::json& gear) { return std::pair{gear["Y_F"].get<double>(), gear["Y_S"].get<double>()}; };
+  const std::string pair = "gear --z1 21 --z2 43 --module 1.75 --x1 0.4380 --x2 0.0426 --face-width 20 --torque1 10N*m "
+                           "--speed1 800rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 --f-pb 8 --f-falpha 9 "
+                           "--F-betax 10 --format json ";
+  // Without allowance1/2 the mesh's grade 6 gives ISO/TR 10064-2's allowances, as --quality 6 does.
+  const CliRun base = run("'" + kFile + "' --torque sun=40N*m --rate --format json");
+  ASSERT_EQ(base.status, 0) << base.err;
+  const auto by_grade = nlohmann::json::parse(base.out)["rating"]["meshes"][0]["gears"];
+  const CliRun g6 = gearkit::testing::run_gearkit(pair + "--quality 6");
+  ASSERT_EQ(g6.status, 0) << g6.err;
+  const auto gear6 = nlohmann::json::parse(g6.out)["rating"]["gears"];
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(Y_of(by_grade[i]).first, Y_of(gear6[i]).first, 1e-12);
+    EXPECT_NEAR(Y_of(by_grade[i]).second, Y_of(gear6[i]).second, 1e-12);
+  }
+  const CliRun note = run("'" + kFile + "' --torque sun=40N*m --rate");
+  EXPECT_NE(note.out.find("Mesh 's-p': tooth root (Y_F, Y_S) at the generating shift"), std::string::npos) << note.out;
+  EXPECT_NE(note.out.find("(ISO/TR 10064-2 for grade 6)"), std::string::npos);
+  // Given allowances and a tool per gear: the same as the gear command with the same inputs.
+  const std::string file = edited("mesh_tools.yaml", "- {gears: [s, p], carrier: carrier}",
+                                  "- {gears: [s, p], carrier: carrier, rating: {allowance1: -0.06 mm, allowance2: -0.03 mm, "
+                                  "rack2: {dedendum: 1.4, root_radius: 0.25}, reversed_bending2: false}}");
+  const CliRun r = run("'" + file + "' --torque sun=40N*m --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto mesh = nlohmann::json::parse(r.out)["rating"]["meshes"][0]["gears"];
+  const CliRun g = gearkit::testing::run_gearkit(pair + "--thickness-allowances1 -0.06,-0.09 --thickness-allowances2 -0.03,-0.06 "
+                                                        "--rack2 1,1.4,0.25");
+  ASSERT_EQ(g.status, 0) << g.err;
+  const auto gear = nlohmann::json::parse(g.out)["rating"]["gears"];
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(Y_of(mesh[i]).first, Y_of(gear[i]).first, 1e-12) << "gear " << i + 1;
+    EXPECT_NEAR(Y_of(mesh[i]).second, Y_of(gear[i]).second, 1e-12) << "gear " << i + 1;
+  }
+  // The allowance thins the sun's root chord s_Fn, so Y_F rises above the nominal tooth's (x_E = x),
+  // as ISO 6336-3's Y_F = 6 (h_Fe/m_n) cos(alpha_Fen) / ((s_Fn/m_n)^2 cos(alpha_n)) says.
+  const CliRun nominal = gearkit::testing::run_gearkit(pair);
+  ASSERT_EQ(nominal.status, 0) << nominal.err;
+  EXPECT_GT(Y_of(mesh[0]).first, Y_of(nlohmann::json::parse(nominal.out)["rating"]["gears"][0]).first);
+  // The planet's default reversed bending (Y_M = 0.7) is overridden by the mesh's key.
+  EXPECT_DOUBLE_EQ(mesh[1]["Y_M"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(by_grade[1]["Y_M"].get<double>(), 0.7);
+}
