@@ -11,7 +11,10 @@
 #include <gearkit/train/torques.hpp>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -255,7 +258,22 @@ struct MeshRating {
   gg::RatingInput input;
   gg::PairRating rating;
   std::string allowances_from = {};  ///< where input.A_sne came from, for the report's note
+  std::array<double, 2> beta = {};   ///< each gear's own helix angle, rad (train file: > 0 right hand)
 };
+
+// A train file gives each gear its own signed helix angle (docs/train.md): > 0 right hand.
+const char* hand_of(double beta) { return beta > 0.0 ? "right" : beta < 0.0 ? "left" : "spur"; }
+
+// The hand of every helical gear of the rated meshes, in one note (issue 25: the hand in every report).
+void note_helix_hands(io::Report& report, const std::vector<MeshRating>& rated) {
+  std::vector<std::string> hands;
+  for (const auto& m : rated)
+    for (int i = 0; i < 2; ++i) {
+      const std::string entry = fmt::format("{} {}", i == 0 ? m.pinion : m.wheel, hand_of(m.beta[i]));
+      if (m.beta[i] != 0.0 && std::find(hands.begin(), hands.end(), entry) == hands.end()) hands.push_back(entry);
+    }
+  if (!hands.empty()) report.notes.push_back(fmt::format("Helix hands: {}.", fmt::join(hands, ", ")));
+}
 
 // One mesh: its pair, torques per planet, relative speed, cycles per turn and load sharing.
 std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingData& d, gt::MeshId k, double T_pinion_total,
@@ -268,7 +286,7 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
     warnings.push_back(fmt::format("mesh '{}' carries no load or does not turn relative to its carrier: not rated", mesh.name));
     return std::nullopt;
   }
-  MeshRating m{mesh.name, g1.name, g2.name, d.base, {}, {}};
+  MeshRating m{mesh.name, g1.name, g2.name, d.base, {}, {}, {g1.beta, g2.beta}};
   gg::RatingInput& in = m.input;
   // An idler or a planet between two meshes is bent both ways: the default a mesh's
   // reversed_bending1/2 may override, so it is set before the mesh's keys are read.
@@ -322,6 +340,7 @@ void report_meshes(io::Report& report, const std::vector<MeshRating>& rated) {
     j["mesh"] = m.mesh;
     j["gear_names"] = {m.pinion, m.wheel};
     j["K_gamma"] = m.input.K_gamma;
+    j["helix_hands"] = {hand_of(m.beta[0]), hand_of(m.beta[1])};
     list.push_back(j);
     for (const auto& w : m.rating.warnings) report.warnings.push_back(fmt::format("mesh '{}': {}", m.mesh, w));
     if (m.input.method == gg::RatingMethod::iso6336 && m.input.face_load.model == gg::FaceLoadModel::sun && std::isfinite(m.rating.f_sh)) {
@@ -368,6 +387,7 @@ void add_mesh_ratings(io::Report& report, const std::string& file, const gt::Tra
     }
   }
   report_meshes(report, rated);
+  note_helix_hands(report, rated);
 }
 
 }  // namespace gearkit::plugins::train

@@ -238,3 +238,29 @@ TEST(TrainRating, MeshToolsAndAllowancesAreThoseOfAGearPair) {
   EXPECT_DOUBLE_EQ(mesh[1]["Y_M"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(by_grade[1]["Y_M"].get<double>(), 0.7);
 }
+
+// Issue 25: the hand of every helical gear is printed, from each gear's own signed helix angle
+// (docs/train.md: > 0 right hand); an external pair has opposite hands, an internal pair the same.
+TEST(TrainRating, HelixHandOfEveryGearIsPrinted) {
+  std::ifstream in(kFile);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"x: 0.4380,", "x: 0.4380, helix_angle: 12 deg,"},
+                                 {"x: 0.0426,", "x: 0.0426, helix_angle: -12 deg,"}, {"x: 0, face_width: 22 mm,", "x: 0, face_width: 22 mm, helix_angle: -12 deg,"}}) {
+    const std::size_t at = s.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    s.replace(at, from.size(), to);
+  }
+  const fs::path p = gearkit::testing::scratch_dir("train-rating") / "helical.yaml";
+  std::ofstream(p) << s;
+  const CliRun r = run("'" + p.string() + "' --torque sun=40N*m --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto meshes = nlohmann::json::parse(r.out)["rating"]["meshes"];
+  EXPECT_EQ(meshes[0]["helix_hands"], nlohmann::json({"right", "left"}));  // sun +12, planet -12
+  EXPECT_EQ(meshes[1]["helix_hands"], nlohmann::json({"left", "left"}));   // planet and ring: the same hand
+  const CliRun t = run("'" + p.string() + "' --torque sun=40N*m --rate");
+  EXPECT_NE(t.out.find("Helix hands: s right, p left, r left."), std::string::npos) << t.out;
+  // A spur train says nothing of hands.
+  EXPECT_EQ(run("'" + kFile + "' --torque sun=40N*m --rate").out.find("Helix hands"), std::string::npos);
+}
