@@ -30,7 +30,13 @@ std::optional<Eigen::Vector2d> instant_centre(const Eigen::VectorXd& q, const Ei
   const Eigen::Vector2d c = -(a.v - b.v) + a.omega * perp(a.r) - b.omega * perp(b.r);
   const double scale = std::max({std::abs(a.omega), std::abs(b.omega), 1e-300});
   if (std::abs(w) <= 1e-12 * scale || w == 0.0) return std::nullopt;
-  return Eigen::Vector2d(-perp(c) / w);
+  const Eigen::Vector2d centre = -perp(c) / w;
+  // A body that translates through a parallelogram turns at rounding noise (1e-17 rad/s) and
+  // would put its centre 5e15 m away: farther than 1e4 times the largest length a model may
+  // hold (1e4 m, docs/units.md), the centre is the point at infinity of a translation.
+  constexpr double kFarthestCentre = 1e8;  // m
+  if (!(centre.norm() <= kFarthestCentre)) return std::nullopt;
+  return centre;
 }
 
 std::optional<Eigen::Vector2d> line_intersection(const Eigen::Vector2d& a1, const Eigen::Vector2d& a2,

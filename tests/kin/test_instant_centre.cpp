@@ -58,5 +58,20 @@ TEST(InstantCentre, TranslationHasNoCentre) {
   EXPECT_FALSE(line_intersection({0, 0}, {1, 0}, {0, 1}, {2, 1}));
 }
 
+// A seat carried by a parallelogram (seed OTM 2015 problem 1) translates, but its computed angular
+// speed is rounding noise, not 0: with v = 0.75 m/s and omega = 1e-17 rad/s the centre would sit
+// v/omega = 7.5e16 m away. It is a translation; a real rotation about a far point stays a centre.
+TEST(InstantCentre, RoundingNoiseRotationIsATranslation) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(3), v(3);
+  q << 1.2, -0.4, 0.0;
+  v << 0.0, 0.75, 1e-17;
+  EXPECT_FALSE(instant_centre(q, v, 0));
+  v << 0.0, 0.75, 0.75 / 500.0;  // about a point 500 m away: still a centre, at (1.2 - 500, -0.4)
+  const auto c = instant_centre(q, v, 0);
+  ASSERT_TRUE(c);
+  EXPECT_NEAR(c->x(), 1.2 - 500.0, 1e-9);
+  EXPECT_NEAR(c->y(), -0.4, 1e-9);
+}
+
 }  // namespace
 }  // namespace gearkit::kin

@@ -8,8 +8,9 @@ namespace gearkit::kin {
 /// The instant centre I_ij of body i relative to body j (either may be kGround): the point [m]
 /// where both bodies have the same velocity. By Kennedy's theorem I_ij lies on the line
 /// through I_0i and I_0j (the tests check this).
-/// @returns nullopt when the relative motion is a translation (the centre is at infinity) or
-///          both bodies move alike (|omega_i - omega_j| below 1e-12 of the speeds).
+/// @returns nullopt when the relative motion is a translation (the centre is at infinity: also
+///          a centre farther than 1e8 m, where a translating body's rounding-noise rotation puts
+///          it) or both bodies move alike (|omega_i - omega_j| below 1e-12 of the speeds).
 std::optional<Eigen::Vector2d> instant_centre(const Data& data, int i, int j = kGround);
 
 /// The same for coordinates q and any compatible velocity field v (e.g. input_sensitivity,
