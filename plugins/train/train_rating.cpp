@@ -159,13 +159,16 @@ gg::GearPairInput pair_of(const gt::TrainModel& model, const RatingData& d, cons
   in.helix_angle = std::fabs(g1.beta);
   in.x1 = g1.x;
   in.x2 = g2.x;
-  double b = kNaN;
-  for (const gt::Gear* g : {&g1, &g2}) {
-    const double w = std::isnan(gear_data(d, *g).face_width_mm) ? d.face_width_mm : gear_data(d, *g).face_width_mm;
-    if (std::isnan(w)) io::fail_at(gear_data(d, *g).mark, fmt::format("gear '{}': the rating needs its face_width", g->name));
-    b = std::isnan(b) ? w : std::min(b, w);
+  std::array<double, 2> w{};
+  for (int i = 0; i < 2; ++i) {
+    const gt::Gear& g = i == 0 ? g1 : g2;
+    w[i] = std::isnan(gear_data(d, g).face_width_mm) ? d.face_width_mm : gear_data(d, g).face_width_mm;
+    if (std::isnan(w[i])) io::fail_at(gear_data(d, g).mark, fmt::format("gear '{}': the rating needs its face_width", g.name));
   }
-  in.face_width = b;
+  // Faces centred on each other: the mesh carries the narrower width; the wider gear's root
+  // carries at most one module more on each side (ISO 6336-3; GearPairInput::face_widths).
+  in.face_width = std::min(w[0], w[1]);
+  if (w[0] != w[1]) in.face_widths = {w[0], w[1]};
   return in;
 }
 

@@ -264,3 +264,20 @@ TEST(TrainRating, HelixHandOfEveryGearIsPrinted) {
   // A spur train says nothing of hands.
   EXPECT_EQ(run("'" + kFile + "' --torque sun=40N*m --rate").out.find("Helix hands"), std::string::npos);
 }
+
+// Issue 25 (face widths per gear): the ring (22 mm) is wider than its planet (20 mm). The mesh
+// carries the common 20 mm, and the ring's root the common width plus what it extends beyond the
+// planet, at most one module (1.75 mm) on each side: 20 + 2 x 1 = 22 mm (ISO 6336-3). Its root
+// stress is then 20/22 of the stress of a 20 mm ring; the pitting stresses do not change.
+TEST(TrainRating, AWiderGearCarriesItsRootOverItsOwnFace) {
+  const auto meshes = [&](const std::string& file) {
+    const CliRun r = run("'" + file + "' --torque sun=40N*m --rate --format json");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out)["rating"]["meshes"];
+  };
+  const auto wide = meshes(kFile)[1]["gears"];
+  const auto narrow = meshes(edited("ring20.yaml", "x: 0, face_width: 22 mm,", "x: 0, face_width: 20 mm,"))[1]["gears"];
+  EXPECT_NEAR(wide[1]["sigma_F_MPa"].get<double>() / narrow[1]["sigma_F_MPa"].get<double>(), 20.0 / 22.0, 1e-12);
+  EXPECT_NEAR(wide[0]["sigma_F_MPa"].get<double>(), narrow[0]["sigma_F_MPa"].get<double>(), 1e-9);  // the planet: its own 20 mm
+  EXPECT_NEAR(wide[1]["sigma_H_MPa"].get<double>(), narrow[1]["sigma_H_MPa"].get<double>(), 1e-9);
+}
