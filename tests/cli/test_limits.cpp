@@ -23,7 +23,9 @@ const fs::path kExamples = fs::path(GEARKIT_SOURCE_DIR) / "examples";
 
 std::string example(const std::string& relative) { return shell_quote((kExamples / relative).string()); }
 
-/// Status 2 within a second, one stderr line containing `part`.
+/// Status 2, one stderr line containing `part`, and no run away: the old behaviour took minutes
+/// or ran for ever. The bound is far above the refusal's cost (under 0.1 s in Release, 1.6 s
+/// seen under ASan with ctest -j2 beside the fuzzer), so that load cannot fail the test.
 void expect_quick_refusal(const std::string& args, const std::string& part) {
   const auto start = std::chrono::steady_clock::now();
   const auto r = run_gearkit(args);
@@ -31,7 +33,7 @@ void expect_quick_refusal(const std::string& args, const std::string& part) {
   EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
-  EXPECT_LT(seconds, 1.0) << args;  // not a timing test: the old behaviour took minutes or for ever
+  EXPECT_LT(seconds, 30.0) << args;  // not a timing test: a guard against running away
 }
 
 fs::path write(const std::string& name, const std::string& text) {
