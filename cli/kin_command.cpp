@@ -71,6 +71,20 @@ void check_continuation_work(const kin::Model& m, double distance, double step) 
 
 
 
+// --min-transmission-angle: an acute angle, 0 to 90 deg (the transmission angle is acute).
+double min_transmission_angle(const io::po::variables_map& vm) {
+  const std::string text = vm["min-transmission-angle"].as<std::string>();
+  double v = 0;
+  try {
+    v = io::parse_quantity_si(text, io::Quantity::angle, "deg");
+  } catch (const std::exception& e) {
+    io::fail_option("--min-transmission-angle", e.what());
+  }
+  if (!(v >= 0 && v <= M_PI / 2))
+    io::fail_option("--min-transmission-angle", fmt::format("expected an angle from 0 to 90 deg, found {}", io::quote(text)));
+  return v;
+}
+
 int driver_named(const mechanism::Mechanism& mech, const io::po::variables_map& vm) {
   if (!vm.count("driver")) return 0;
   const std::string name = vm["driver"].as<std::string>();
@@ -167,6 +181,8 @@ io::po::options_description kin_options() {
   add_coupler_options(desc);  // kin_coupler.cpp
   desc.add_options()("speed", io::po::value<std::string>()->value_name("SPEED"),
                      "input speed for the --animate loop time (default: the driver's speed in the file) (unit required, e.g. 60rpm)")(
+      "min-transmission-angle", io::po::value<std::string>()->value_name("ANGLE"),
+      "warn where a four-bar's transmission angle falls below this (default 40 deg) (bare number: deg)")(
       "branch", io::po::value<std::string>()->value_name("continue|switch"),
       "at a change point (two branches cross, e.g. a parallelogram lying flat): go on along the branch that "
       "continues the motion smoothly (default) or switch to the other");
@@ -214,6 +230,7 @@ int run_kin_command(plugin::CommandContext& context) {
       io::fail_option("--branch", fmt::format("expected continue or switch, found {}", io::quote(branch)));
     r.switch_branch = branch == "switch";
   }
+  if (vm.count("min-transmission-angle")) r.min_transmission_angle = min_transmission_angle(vm);
   r.vm = &vm;
   return run_analysis(mech, r, context.out, context.err);
 }

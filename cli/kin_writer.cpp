@@ -32,7 +32,8 @@ bool rendered_whole(const io::CommonOptions& c, const io::Table& positions) {
 KinWriter::KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, const kin::DofReport& dof, std::ostream& out,
                      std::ostream& err)
     : mech_(mech), r_(r), dof_(dof), err_(err), files_(out),
-      rows_(mech, r.driver, kin::find_four_bar(mech.model).has_value(), mech.model.has_loads(), !r.range) {
+      rows_(mech, r.driver, kin::find_four_bar(mech.model).has_value(), mech.model.has_loads(), !r.range),
+      summary_(mech, r.driver, r.min_transmission_angle) {
   if (r.common.format == io::Format::json && !r.common.table.empty())
     io::fail_option("--table", "expected no --table with --format json (it holds every table), found one");
   whole_ = rendered_whole(r.common, rows_.table());
@@ -97,6 +98,7 @@ void KinWriter::write_row(const KinPosition& p) {
 void KinWriter::add(const KinPosition& p) {
   if (!begun_) begin(&p);
   note_undefined_rates(p);
+  summary_.add(p);
   ++seen_positions_;
   if (rows_thread_)
     rows_thread_->push(p);
@@ -127,7 +129,13 @@ void KinWriter::note_undefined_rates(const KinPosition& p) {
 }
 
 io::Report KinWriter::tail_of(const KinAnalysis& a) {
-  io::Report tail = kin_report_tail(mech_, a);
+  io::Report tail;
+  summary_.write(a, tail);  // first: the summary follows the positions
+  io::Report rest = kin_report_tail(mech_, a);
+  for (io::Table& t : rest.tables) tail.tables.push_back(std::move(t));
+  tail.notes = std::move(rest.notes);
+  tail.warnings.insert(tail.warnings.begin(), rest.warnings.begin(), rest.warnings.end());
+  for (const auto& [key, value] : rest.json.items()) tail.json[key] = value;
   for (std::size_t k = 0; k < undefined_rates_.size(); ++k)
     if (undefined_rates_[k] > 0)
       tail.warnings.push_back(fmt::format("output {}: the point stands still at {} of {} positions, where the rate of its "

@@ -7,6 +7,7 @@
 #include "kin_plot.hpp"
 #include "kin_report.hpp"
 #include "kin_row_pipeline.hpp"
+#include "kin_summary.hpp"
 
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/output.hpp>
@@ -29,6 +30,7 @@ struct KinRequest {
   std::optional<std::string> plot, animate;
   std::optional<double> speed;  ///< --speed, SI, for the animation's loop time
   bool switch_branch = false;   ///< --branch switch: the other branch at each change point
+  double min_transmission_angle = kDefaultMinTransmissionAngle;  ///< --min-transmission-angle [rad]
   io::CommonOptions common;
   const io::po::variables_map* vm = nullptr;  ///< for the coupler-curve options
 };
@@ -63,6 +65,7 @@ class KinWriter {
   bool whole_ = false;  // render the report at the end (HTML, CSV of another table)
   std::optional<io::ReportStream> stream_;
   KinRows rows_;
+  KinSummary summary_;
   bool begun_ = false;
   long written_ = 0;
   io::Report equations_;
