@@ -120,7 +120,7 @@ void require(bool ok, const io::MapReader& r, const std::string& key, std::strin
 
 }  // namespace
 
-Output run_crank_rocker_task(const io::YamlDocument& doc, const Overrides&) {
+Output run_crank_rocker_task(const io::YamlDocument& doc, const Overrides& overrides) {
   io::MapReader r(doc.root, doc.file, "crank-rocker task");
   gs::QuickReturnTask t;
   const std::string title = r.optional_string("synthesis").value_or("");
@@ -141,6 +141,7 @@ Output run_crank_rocker_task(const io::YamlDocument& doc, const Overrides&) {
   out.report.json["task"] = "crank-rocker";
   add_quick_return_table(t, res, out);
   add_four_bar_tables(res.linkage, {}, gs::transmission_range(res.linkage, res.theta2_extended, 2 * pi, 1), out.report);
+  add_four_bar_summary(res.linkage, res.theta2_extended, 2 * pi, 1, overrides.min_transmission_angle, true, out.report);
   gs::MechanismSketch sketch = gs::four_bar_sketch(res.linkage, res.theta2_extended, 2 * pi, 1, out.report.title);
   sketch.comments = {fmt::format("Crank-rocker for a {} deg rocker swing with time ratio {:g} (gearkit synth); drawn at the "
                                  "extended limit position.", deg(t.swing), t.time_ratio)};
@@ -153,7 +154,7 @@ Output run_crank_rocker_task(const io::YamlDocument& doc, const Overrides&) {
   return out;
 }
 
-Output run_dwell_task(const io::YamlDocument& doc, const Overrides&) {
+Output run_dwell_task(const io::YamlDocument& doc, const Overrides& overrides) {
   io::MapReader r(doc.root, doc.file, "dwell task");
   gs::DwellTask t;
   const std::string title = r.optional_string("synthesis").value_or("");
@@ -174,6 +175,7 @@ Output run_dwell_task(const io::YamlDocument& doc, const Overrides&) {
   out.report.title = title.empty() ? fmt::format("Single-dwell six-bar: {} deg dwell", deg(t.dwell)) : title;
   out.report.json["task"] = "dwell";
   add_four_bar_tables(res.four_bar, {}, gs::transmission_range(res.four_bar, res.window_start, 2 * pi, 1), out.report);
+  add_four_bar_summary(res.four_bar, res.window_start, 2 * pi, 1, overrides.min_transmission_angle, true, out.report);
   add_dwell_table(t, res, out);
   gs::MechanismSketch sketch = gs::dwell_sketch(res, out.report.title);
   sketch.comments = {fmt::format("Single-dwell six-bar (gearkit synth): rocker6 rests while the crank turns {} deg from its drawn "

@@ -8,12 +8,14 @@
 #include <gearkit/io/output.hpp>
 #include <gearkit/io/command_line.hpp>
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/quantity.hpp>
 #include <gearkit/synth/function_generation.hpp>
 
 #include <fmt/format.h>
 
 #include <functional>
 #include <map>
+#include <numbers>
 
 namespace gearkit::plugins::synth {
 
@@ -23,7 +25,7 @@ namespace {
 
 constexpr std::string_view usage =
     "gearkit synth function|motion|path|crank-rocker|dwell FILE.yaml [--mechanism OUT.yaml] "
-    "[--drawing OUT.svg|OUT.dxf] [--plot OUT.svg] [--seed N] [--evaluations N] [--restarts N] "
+    "[--drawing OUT.svg|OUT.dxf] [--plot OUT.svg] [--min-transmission-angle ANGLE] [--seed N] [--evaluations N] [--restarts N] "
     "[--format text|json|csv|md|html] [--output FILE] [--strict]";
 
 using Task = std::function<Output(const io::YamlDocument&, const Overrides&)>;
@@ -41,6 +43,16 @@ Overrides read_overrides(const po::variables_map& vm) {
   Overrides o;
   if (vm.count("evaluations")) o.evaluations = vm["evaluations"].as<long>();
   if (vm.count("restarts")) o.restarts = vm["restarts"].as<int>();
+  if (vm.count("min-transmission-angle")) {
+    const std::string text = vm["min-transmission-angle"].as<std::string>();
+    try {
+      o.min_transmission_angle = io::parse_quantity_si(text, io::Quantity::angle, "deg");
+    } catch (const std::exception& e) {
+      io::fail_option("--min-transmission-angle", e.what());
+    }
+    if (!(o.min_transmission_angle >= 0 && o.min_transmission_angle <= std::numbers::pi / 2))
+      io::fail_option("--min-transmission-angle", fmt::format("expected an angle from 0 to 90 deg, found '{:.60}'", text));
+  }
   if (vm.count("seed")) {
     const long long s = vm["seed"].as<long long>();
     if (s < 0 || s > 4294967295LL) io::fail_option("--seed", fmt::format("expected 0..4294967295, found {}", s));
@@ -82,7 +94,9 @@ int run_synth_command(plugin::CommandContext& context) {
       ("plot", po::value<std::string>()->value_name("OUT.svg"), "write the task's chart (structural error, output, transmission angle)")
       ("seed", po::value<long long>()->value_name("N"), "path: random seed of the optimiser (default 1)")
       ("evaluations", po::value<long>()->value_name("N"), "path: objective evaluations (docs/cli.md for the limit)")
-      ("restarts", po::value<int>()->value_name("N"), "path: independent optimiser runs (1..64)");
+      ("restarts", po::value<int>()->value_name("N"), "path: independent optimiser runs (1..64)")
+      ("min-transmission-angle", po::value<std::string>()->value_name("ANGLE"),
+       "warn where the four-bar's transmission angle falls below this over its motion (default 40 deg) (bare number: deg)");
   io::add_common_options(desc);
   po::variables_map vm;
   if (!io::parse_command_line(context.args, desc, positional, vm, usage, context.out)) return 0;

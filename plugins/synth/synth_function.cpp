@@ -158,7 +158,7 @@ std::vector<std::string> mapping_comments(const FunctionFile& f, const gs::Funct
 
 }  // namespace
 
-Output run_function_task(const io::YamlDocument& doc, const Overrides&) {
+Output run_function_task(const io::YamlDocument& doc, const Overrides& overrides) {
   const FunctionFile f = read_task(doc);
   const gs::FunctionResult r = gs::synthesize_function(f.task);
   if (!r.defects.ok())
@@ -188,6 +188,8 @@ Output run_function_task(const io::YamlDocument& doc, const Overrides&) {
   } else {
     const gs::FourBar& fb = r.four_bar.linkage;
     add_four_bar_tables(fb, r.defects, r.transmission, out.report);
+    add_four_bar_summary(fb, theta2_start, std::abs(f.task.input_range), direction, overrides.min_transmission_angle,
+                         r.defects.ok(), out.report);
     gs::MechanismSketch sketch = gs::four_bar_sketch(fb, theta2_start, std::abs(f.task.input_range), direction, out.report.title);
     sketch.comments = mapping_comments(f, r);
     out.mechanism_yaml = gs::to_mechanism_yaml(sketch);

@@ -228,7 +228,7 @@ void draw_poses(const std::vector<gs::Pose>& poses, double size, io::Drawing& d)
 
 }  // namespace
 
-Output run_motion_task(const io::YamlDocument& doc, const Overrides&) {
+Output run_motion_task(const io::YamlDocument& doc, const Overrides& overrides) {
   io::MapReader r(doc.root, doc.file, "motion-generation task");
   MotionFile f;
   f.title = r.optional_string("synthesis").value_or("");
@@ -255,6 +255,8 @@ Output run_motion_task(const io::YamlDocument& doc, const Overrides&) {
   r.finish();
   add_positions_table(f, c, out);
   add_four_bar_tables(c.linkage, c.defects, c.transmission, out.report);
+  add_four_bar_summary(c.linkage, c.theta2[0], c.defects.order_defect ? 0.0 : c.defects.travel, c.defects.direction,
+                       overrides.min_transmission_angle, c.defects.ok(), out.report);
   write_mechanism(f, c, out);
   draw_four_bar(c.linkage, c.theta2, c.defects.order_defect ? 0.0 : c.defects.travel, c.defects.direction, out.drawing);
   draw_poses(f.poses, 0.08 * std::max(c.linkage.coupler, c.linkage.ground()), out.drawing);

@@ -8,6 +8,7 @@
 #include <gearkit/synth/linkage.hpp>
 #include <gearkit/synth/mechanism_writer.hpp>
 
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ struct Overrides {
   std::optional<long> evaluations;
   std::optional<int> restarts;
   std::optional<unsigned> seed;
+  double min_transmission_angle = 40 * std::numbers::pi / 180;  ///< --min-transmission-angle [rad]
 };
 
 struct Output {
@@ -53,6 +55,15 @@ double unwrapped(double start, double t2, int direction);
 /// angle range) of a four-bar, with their JSON keys under `key`; defects become warnings.
 void add_four_bar_tables(const gs::FourBar& linkage, const gs::DefectReport& defects,
                          const gs::TransmissionRange& transmission, io::Report& report);
+
+/// Table "Mechanism summary" and JSON "summary" (synth_summary.cpp) over the motion the four-bar
+/// really makes: the full turn when its crank turns fully, else `travel` [rad] from `theta2_start`
+/// in `direction`. The least and largest transmission angle and where, the rocker's limit
+/// positions (located to O(h^3) by a parabola through 0.1 deg samples), the crank's dead points
+/// when it does not turn fully; a warning below `limit` [rad] when `warn` (a defective linkage
+/// has its own warnings).
+void add_four_bar_summary(const gs::FourBar& linkage, double theta2_start, double travel, int direction, double limit,
+                          bool warn, io::Report& report);
 
 /// Draws the four-bar at each crank angle (the first solid, the others on layer "positions")
 /// and its coupler curve over `travel` from theta2[0] in `direction`.

@@ -124,6 +124,8 @@ Output run_path_task(const io::YamlDocument& doc, const Overrides& overrides) {
   add_four_bar_tables(res.linkage, res.defects, res.transmission, out.report);
   const bool full = gs::crank_turns_fully(res.linkage);
   const double travel = full ? 2 * pi : res.defects.travel;
+  add_four_bar_summary(res.linkage, res.theta2[0], travel, res.defects.direction, overrides.min_transmission_angle,
+                       res.defects.ok(), out.report);
   gs::MechanismSketch sketch = gs::four_bar_sketch(res.linkage, res.theta2[0], travel, res.defects.direction, out.report.title);
   sketch.comments = {fmt::format("Path generator: the coupler point P passes near {} target points (gearkit synth, seed {}).",
                                  t.points.size(), t.budget.seed)};
