@@ -32,6 +32,7 @@ struct Options {
   bool dxf_lines_arcs = false;
   std::optional<double> cutter_radius_mm;
   std::optional<double> follower_at;
+  std::optional<double> jump_margin;
   GcodeOptions gcode_options;
 };
 
@@ -46,6 +47,7 @@ Options read_options(const io::po::variables_map& vm) {
   if (const auto rc = io::quantity_option(vm, "cutter-radius", io::Quantity::length, "mm", radius))
     o.cutter_radius_mm = *rc * 1000;
   o.follower_at = io::quantity_option(vm, "follower-at", io::Quantity::angle, "deg");
+  if (vm.count("jump-margin")) o.jump_margin = vm["jump-margin"].as<double>();
   if (vm.count("gcode-form")) {
     const std::string form = vm["gcode-form"].as<std::string>();
     if (form != "xy" && form != "polar") io::fail_option("--gcode-form", fmt::format("expected xy or polar, found {}", io::quote(form)));
@@ -138,6 +140,8 @@ int run_cam_command(plugin::CommandContext& context) {
       ("dynamics-plot", io::po::value<std::string>()->value_name("FILE.svg"),
        "write contact force, camshaft torque and Hertz stress as SVG")
       ("dyn", io::po::value<std::string>()->value_name("FILE.yaml"), "write the camshaft as a `gearkit dyn` model (flywheel)")
+      ("jump-margin", io::po::value<double>()->value_name("FACTOR"),
+       "size the spring to hold the follower up to FACTOR x the design speed (default: dynamics.jump_margin, else 1)")
       ("gcode", io::po::value<std::string>()->value_name("FILE.ngc"), "write the cutter-centre path as G-code (RS-274/NGC)")
       ("gcode-form", io::po::value<std::string>()->value_name("xy|polar"),
        "xy (2-axis mill, G2/G3 arcs; default) or polar (rotary table: X radius, C angle)")
@@ -152,6 +156,12 @@ int run_cam_command(plugin::CommandContext& context) {
   CamModel model = load_cam_model(options.file);
   if (options.cutter_radius_mm) model.cutter_radius_mm = options.cutter_radius_mm;
   if (options.follower_at) model.follower_at = *options.follower_at;
+  if (options.jump_margin) {
+    if (!model.dynamics) io::fail_option("--jump-margin", "expected a dynamics: section in the model (the margin sizes its spring)");
+    if (const auto problem = jump_margin_problem(model.dynamics->design_speed, *options.jump_margin))
+      io::fail_option("--jump-margin", *problem);
+    model.dynamics->jump_margin = *options.jump_margin;
+  }
   check_cutter(model, options);
   const CamResult result = analyse(model, options.file);
 

@@ -20,7 +20,7 @@ void settle_spring(const CamModel& model, CamDynamics& out) {
   const bool spring = model.design.follower.closure == gc::Closure::spring;
   if (spring) {
     gc::SizingRequest rq;
-    rq.omega = in.design_speed, rq.min_force = in.min_force;
+    rq.omega = out.sizing_omega, rq.min_force = in.min_force;
     rq.spring_rate = in.spring_rate, rq.damping_ratio = in.damping_ratio;
     if (!in.spring_rate) rq.preload = in.preload;
     gc::SpringSizing s;
@@ -64,6 +64,7 @@ CamDynamics analyse_dynamics(const CamModel& model) {
   const DynamicsInput& in = *model.dynamics;
   CamDynamics out;
   out.omega = in.design_speed;
+  out.sizing_omega = in.design_speed * in.jump_margin;
   settle_spring(model, out);
   const gc::ContactMaterial* material = model.contact ? &model.contact->material : nullptr;
   out.states = gc::dynamics_over_turn(model.design, out.train, out.omega, in.samples, material);

@@ -23,6 +23,7 @@ struct CamDynamics {
   bool rate_sized = false, preload_sized = false;
   std::optional<gearkit::cam::SpringSizing> needed;  ///< given both: the preload the given rate needs
   double omega = 0;                                  ///< design speed [rad/s]
+  double sizing_omega = 0;                           ///< the speed a sized spring holds to: omega x jump margin [rad/s]
   std::vector<gearkit::cam::DynamicState> states;    ///< over the turn at the design speed
   std::optional<gearkit::cam::JumpSpeed> jump;       ///< force closure; none up to the search speed
   double least_margin = 0;                           ///< least Q - F_min h at the design speed

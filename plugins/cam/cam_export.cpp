@@ -132,7 +132,11 @@ io::Plot motion_plot(const CamModel& model, const std::vector<gc::ContactState>&
   const std::string d_unit = osc ? "rad" : "mm";
   const std::string per = timed ? "s" : "rad";
   io::Plot plot;
-  plot.title = model.name.empty() ? "Follower motion" : fmt::format("Follower motion: {}", model.name);
+  // Every plot states its speed (issue 32): the per-second values are at cam.speed, the
+  // dynamics plot at the design speed.
+  const std::string speed = timed ? fmt::format("at cam speed {:.6g} rpm", w * 30 / std::numbers::pi)
+                                  : "per radian of cam angle (no cam speed given)";
+  plot.title = fmt::format("Follower motion {}{}", speed, model.name.empty() ? "" : ": " + model.name);
   plot.x_label = "cam angle theta [deg]";
   io::PlotPanel s{fmt::format("{} [{}]", osc ? "psi" : "s", s_unit), {}, {}};
   io::PlotPanel v{fmt::format("velocity [{}/{}]", d_unit, per), {}, {}};
@@ -164,7 +168,10 @@ std::string motion_csv(const CamModel& model, const std::vector<gc::ContactState
   if (model.omega) out += osc ? ",omega_rad_s,alpha_rad_s2,jerk_rad_s3" : ",v_mm_s,a_mm_s2,j_mm_s3";
   out += ",pressure_angle_deg,rho_pitch_mm,pitch_x_mm,pitch_y_mm,profile_x_mm,profile_y_mm";
   const gc::ContactMaterial* material = model.contact ? &model.contact->material : nullptr;
-  if (dyn) out += fmt::format(",contact_force_N,camshaft_torque_N_m,power_W{}", material ? ",hertz_stress_MPa" : "");
+  // Q beside F_n: the translating follower's axial force F_c = F_n cos phi, or the oscillating
+  // arm's torque (cam_report_dynamics.cpp, axial_rows).
+  if (dyn) out += fmt::format(",contact_force_N,{},camshaft_torque_N_m,power_W{}", osc ? "arm_torque_N_m" : "axial_force_N",
+                              material ? ",hertz_stress_MPa" : "");
   out += "\n";
   for (const gc::ContactState& c : samples) {
     out += fmt::format("{:.6f},{:.9g},{:.9g},{:.9g},{:.9g}", c.theta * deg_per_rad,
@@ -180,7 +187,7 @@ std::string motion_csv(const CamModel& model, const std::vector<gc::ContactState
     if (dyn) {
       const gc::DynamicState s = gc::dynamic_state(model.design, dyn->train, dyn->omega, c.theta, material);
       const double force = s.wall == 0 ? s.force / s.lever : s.contact_force * s.wall;
-      out += fmt::format(",{:.9g},{:.9g},{:.9g}", force, s.torque, s.power);
+      out += fmt::format(",{:.9g},{:.9g},{:.9g},{:.9g}", force, s.force, s.torque, s.power);
       if (material) out += std::isnan(s.hertz_stress) ? std::string(",") : fmt::format(",{:.9g}", s.hertz_stress / 1e6);
     }
     out += "\n";

@@ -40,17 +40,26 @@ io::Series constant(const std::string& name, double value, const std::vector<dou
 
 io::Plot dynamics_plot(const CamModel& model, const CamDynamics& dyn) {
   io::Plot plot;
-  plot.title = fmt::format("Cam dynamics at {:.6g} rpm{}", dyn.omega * 30 / std::numbers::pi,
-                           model.name.empty() ? "" : ": " + model.name);
+  // The speed it is drawn at, and the cam speed of the s-v-a-j plot when that differs (issue 32).
+  const double rpm = dyn.omega * 30 / std::numbers::pi;
+  const std::string other = model.omega && std::abs(*model.omega - dyn.omega) > 1e-12 * dyn.omega
+                                ? fmt::format(" (the s-v-a-j plot: cam speed {:.6g} rpm)", *model.omega * 30 / std::numbers::pi)
+                                : "";
+  plot.title = fmt::format("Cam dynamics at the design speed {:.6g} rpm{}{}", rpm, other, model.name.empty() ? "" : ": " + model.name);
   plot.x_label = "cam angle theta [deg]";
-  std::vector<double> theta, force, torque, stress;
+  const bool osc = model.design.follower.motion == gc::FollowerMotion::oscillating;
+  std::vector<double> theta, force, axial, torque, stress;
   for (const gc::DynamicState& s : dyn.states) {
     theta.push_back(s.theta);
     force.push_back(s.wall == 0 ? s.force / s.lever : s.contact_force * s.wall);
+    axial.push_back(s.force);
     torque.push_back(s.torque);
     stress.push_back(s.hertz_stress / 1e6);
   }
-  io::PlotPanel f{"contact force [N]", {closed_series("rigid follower", theta, force, "#1f4e9c")}, {}};
+  io::PlotPanel f{"force on the follower [N]", {closed_series("contact force F_n (normal), rigid follower", theta, force, "#1f4e9c")}, {}};
+  // Q: the axial force F_c = F_n cos phi of a translating follower (same panel, N); the arm's
+  // torque of an oscillating one (a panel of its own, N*m).
+  if (!osc) f.series.push_back(closed_series("axial force F_c = F_n cos phi", theta, axial, "#6a3d9a"));
   if (dyn.flexible) {
     std::vector<double> flex;
     for (std::size_t i = 0; i < dyn.flexible->theta.size(); ++i)
@@ -60,7 +69,9 @@ io::Plot dynamics_plot(const CamModel& model, const CamDynamics& dyn) {
   if (model.dynamics->min_force > 0) f.series.push_back(constant("least wanted", model.dynamics->min_force, theta, "#888"));
   f.series.push_back(constant("zero", 0, theta, "#bbb"));
   io::PlotPanel t{"camshaft torque [N*m]", {closed_series("camshaft torque", theta, torque, "#2a7f3f")}, {}};
-  plot.panels = {f, t};
+  plot.panels = {f};
+  if (osc) plot.panels.push_back({"torque of the cam on the arm Q [N*m]", {closed_series("Q = F_n L cos phi", theta, axial, "#6a3d9a")}, {}});
+  plot.panels.push_back(t);
   if (model.contact) {
     io::PlotPanel p{"Hertz contact stress [MPa]", {closed_series("p0", theta, stress, "#b22222")}, {}};
     if (model.contact->allowable) p.series.push_back(constant("allowable", *model.contact->allowable / 1e6, theta, "#888"));

@@ -14,6 +14,9 @@ namespace gearkit::plugins::cam {
 /// tolerance far above the rounding of coordinates (1e-16 relative).
 inline constexpr double kMaxLengthMm = 10000;
 
+/// Largest jump margin (a factor over the design speed) accepted.
+inline constexpr double kMaxJumpMargin = 10;
+
 /// Limits of the work-setting inputs of the dynamics (docs/cli.md).
 inline constexpr int kMinDynamicsSamples = 36, kMaxDynamicsSamples = 36000;
 inline constexpr int kMaxSweepSteps = 1000;
@@ -31,7 +34,10 @@ struct DynamicsInput {
   std::optional<double> spring_rate, preload;  ///< given; the missing ones are sized
   std::optional<double> damping_ratio;   ///< else train.damping
   double min_force = 0;                  ///< [N], sizing target and jump criterion
-  double design_speed = 0;               ///< [rad/s], sizing and the analysis
+  double design_speed = 0;               ///< [rad/s], the analysis
+  /// A sized spring holds the contact up to design_speed x jump_margin (>= 1; default 1, the
+  /// design speed itself): the follower then jumps no earlier than that speed.
+  double jump_margin = 1.0;
   double jump_search_to = 0;             ///< [rad/s]
   std::optional<SpeedSweepInput> sweep;
   int samples = 3600;                    ///< cam angles per turn
@@ -66,6 +72,9 @@ struct CamModel {
 /// conjugate cam, `dynamics:` and `contact:`. @throws io::InputError with file:line:column.
 void read_second_roller(io::MapReader& follower, CamModel& model);
 void read_dynamics(io::MapReader& root, CamModel& model);
+/// What is wrong with a jump margin (dynamics.jump_margin, --jump-margin) for this design speed
+/// [rad/s], as the message's "expected ..., found ..." text; nullopt when it is accepted.
+std::optional<std::string> jump_margin_problem(double design_speed, double margin);
 void read_contact(io::MapReader& root, CamModel& model);
 
 /// Reads the `motion:` list of a mapping (docs/cam.md): the one syntax for motion programs, in

@@ -66,6 +66,19 @@ void read_train(io::MapReader& r, bool oscillating, DynamicsInput& in) {
                                   r.quantity_or("roller_inertia", io::Quantity::moment_of_inertia, "kg*m^2", 0));
 }
 
+}  // namespace
+
+std::optional<std::string> jump_margin_problem(double design_speed, double margin) {
+  if (!(margin >= 1 && margin <= kMaxJumpMargin))
+    return fmt::format("expected a jump margin from 1 to {:g} (a factor over the design speed), found {:.6g}", kMaxJumpMargin, margin);
+  if (!(design_speed * margin <= kMaxSpeedRpm * kRpm))
+    return fmt::format("expected the design speed times the jump margin up to {:.6g} rpm, found {:.6g} rpm", kMaxSpeedRpm,
+                       design_speed * margin / kRpm);
+  return std::nullopt;
+}
+
+namespace {
+
 void read_speeds(io::MapReader& r, const CamModel& model, DynamicsInput& in) {
   const auto speed = r.optional_quantity("design_speed", io::Quantity::angular_velocity, "rpm");
   if (!speed && !model.omega)
@@ -74,6 +87,8 @@ void read_speeds(io::MapReader& r, const CamModel& model, DynamicsInput& in) {
   if (!(in.design_speed > 0 && in.design_speed <= kMaxSpeedRpm * kRpm))
     io::fail_at(r.mark("design_speed"), fmt::format("expected a design speed > 0 and up to {:.6g} rpm, found {:.6g} rpm",
                                                     kMaxSpeedRpm, in.design_speed / kRpm));
+  in.jump_margin = r.optional_number("jump_margin").value_or(1.0);
+  if (const auto problem = jump_margin_problem(in.design_speed, in.jump_margin)) io::fail_at(r.mark("jump_margin"), *problem);
   in.jump_search_to = r.quantity_or("jump_search_to", io::Quantity::angular_velocity, "rpm",
                                     std::min(20 * in.design_speed, kMaxSpeedRpm * kRpm));
   if (!(in.jump_search_to > 0 && in.jump_search_to <= kMaxSpeedRpm * kRpm))

@@ -75,7 +75,10 @@ void train_section(const CamModel& model, const CamDynamics& r, io::Report& rep,
   const DynUnits u(model);
   const gc::FollowerTrain& t = r.train;
   const double preload = r.preload_sized ? shown_preload(model, r, t.preload, t.spring_rate) : t.preload;
-  const std::string sized = fmt::format("sized for {} rpm, {} N", g(r.omega * kRpm), g(model.dynamics->min_force));
+  const double margin = model.dynamics->jump_margin;
+  const std::string sized = margin == 1 ? fmt::format("sized for {} rpm, {} N", g(r.sizing_omega * kRpm), g(model.dynamics->min_force))
+                                        : fmt::format("sized for {} rpm (jump margin {} x the design speed), {} N",
+                                                      g(r.sizing_omega * kRpm), g(margin), g(model.dynamics->min_force));
   io::Table tab{"Follower train", {"quantity", "value", "note"}, {}};
   tab.add_row({fmt::format("{} [{}]", u.osc ? "moment of inertia" : "effective mass", u.mass()), g(t.mass), "given"});
   tab.add_row({fmt::format("spring rate [{}]", u.spring()), g(u.spring_shown(t.spring_rate)), r.rate_sized ? sized : "given"});
@@ -97,8 +100,29 @@ void train_section(const CamModel& model, const CamDynamics& r, io::Report& rep,
   j["spring_rate_sized"] = r.rate_sized;
   j["preload_sized"] = r.preload_sized;
   j["min_contact_force_N"] = number(model.dynamics->min_force);
+  j["jump_margin"] = number(margin);
+  j["spring_sized_for_rpm"] = number(r.sizing_omega * kRpm);
   if (r.needed) j["preload_needed_" + u.force_key()] = number(shown_preload(model, r, r.needed->preload, r.needed->spring_rate));
   if (t.spring_rate > 0) j["natural_frequency_spring_Hz"] = number(spring_natural_frequency(t) * kHz);
+}
+
+/// The force of the cam on the follower along its own motion, Q: for a translating follower the
+/// axial force F_c = F_n cos phi (Norton, Design of Machinery, sect. 8.5 and eq. 15.8: the lumped
+/// model's cam force F_c acts along the follower's axis; the normal force F_n at pressure angle
+/// phi has that axial component and the side thrust F_n sin phi on the guide); for an
+/// oscillating follower the torque of the cam on the arm about its pivot, F_n L cos phi.
+void axial_rows(const CamModel& model, const CamDynamics& r, io::Table& tab, nlohmann::json& j) {
+  const DynUnits u(model);
+  const auto& most = largest(r.states, [](const auto& x) { return x.force; });
+  const auto& least = largest(r.states, [](const auto& x) { return -x.force; });
+  const std::string what = u.osc ? "torque of the cam on the follower arm Q = F_n L cos phi" : "axial force on the follower F_c = F_n cos phi";
+  const std::string key = u.osc ? "arm_torque" : "axial_force";
+  tab.add_row({fmt::format("largest {} [{}]", what, u.force()), g(most.force), at(most.theta)});
+  tab.add_row({fmt::format("least {} [{}]", what, u.force()), g(shown_force(model, r, least.force)), at(least.theta)});
+  j[key + "_max_" + u.force_key()] = number(most.force);
+  j[key + "_max_at_deg"] = number(angle_deg(most.theta));
+  j[key + "_min_" + u.force_key()] = number(shown_force(model, r, least.force));
+  j[key + "_min_at_deg"] = number(angle_deg(least.theta));
 }
 
 void force_rows(const CamModel& model, const CamDynamics& r, io::Table& tab, nlohmann::json& j) {
@@ -193,6 +217,10 @@ void jump_rows(const CamModel& model, const CamDynamics& r, io::Table& tab, nloh
                r.jump ? g(r.jump->omega * kRpm) : fmt::format("none up to {}", g(to * kRpm)),
                r.jump ? at(r.jump->theta) : "-"});
   j["jump_speed_rpm"] = r.jump ? number(r.jump->omega * kRpm) : nlohmann::json();
+  if (r.jump) {
+    tab.add_row({"jump speed / design speed", g(r.jump->omega / r.omega), "-"});
+    j["jump_speed_over_design_speed"] = number(r.jump->omega / r.omega);
+  }
   if (r.jump) j["jump_at_deg"] = number(angle_deg(r.jump->theta));
   j["jump_search_to_rpm"] = number(to * kRpm);
 }
@@ -331,6 +359,7 @@ void dynamics_report(const CamModel& model, const CamDynamics& r, io::Report& re
   io::Table tab{fmt::format("Dynamics at {} rpm", g(r.omega * kRpm)), {"quantity", "value", "at cam angle [deg]"}, {}};
   j["design_speed_rpm"] = number(r.omega * kRpm);
   force_rows(model, r, tab, j);
+  axial_rows(model, r, tab, j);
   torque_rows(r, tab, j);
   contact_rows(model, r, tab, j);
   jump_rows(model, r, tab, j);
