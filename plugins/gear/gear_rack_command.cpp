@@ -1,10 +1,12 @@
 // `gearkit gear rack`: a pinion against a rack (libgear rack_pinion.hpp, docs/gear-types.md).
 #include "gear_types_commands.hpp"
 #include "gear_types_common.hpp"
+#include "gear_types_drawing.hpp"
 
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/rack_pinion.hpp>
 #include <gearkit/io/command_line.hpp>
+#include <gearkit/io/drawing.hpp>
 #include <gearkit/io/report.hpp>
 
 #include <fmt/format.h>
@@ -48,7 +50,9 @@ void add_options(io::po::options_description& desc) {
       ("pin-diameter2", text()->value_name("LEN"), "pin diameter for the rack (default: contact on the datum line) (bare number: mm)")
       ("travel", text()->value_name("LEN"), "rack travel: the shortest rack for it (bare number: mm)")
       ("torque1", text()->value_name("TORQUE"), "torque on the pinion, its sense from --speed1 (unit required, e.g. 9kN*m)")
-      ("speed1", text()->value_name("SPEED"), "speed of the pinion about its axis, signed (--speed1=-100rpm) (unit required, e.g. 1450rpm)");
+      ("speed1", text()->value_name("SPEED"), "speed of the pinion about its axis, signed (--speed1=-100rpm) (unit required, e.g. 1450rpm)")
+      ("svg", text()->value_name("FILE"), "write the drawing (pinion and rack with the datum line, data block) as SVG")
+      ("dxf", text()->value_name("FILE"), "write the drawing as DXF");
 }
 
 gg::RackPinionInput read_input(const io::po::variables_map& vm) {
@@ -202,7 +206,17 @@ int run_gear_rack_command(plugin::CommandContext& context) {
   rack_and_mesh_tables(report, in, r);
   if (T) forces_table(report, in, r, *T, n1);
   report.warnings = r.warnings;
-  return io::emit(report, common, context.out);
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
+  if (vm.count("svg") || vm.count("dxf")) {
+    const io::Drawing drawing = rack_drawing(in, r, 1e-3);
+    if (vm.count("svg")) {
+      io::SvgOptions svg;
+      svg.title = fmt::format("gearkit gear rack: z1 = {}, m_n = {:g} mm", in.z1, in.m_n);
+      outputs.add("--svg", vm["svg"].as<std::string>(), io::to_svg(drawing, svg));
+    }
+    if (vm.count("dxf")) outputs.add("--dxf", vm["dxf"].as<std::string>(), io::to_dxf(drawing));
+  }
+  return io::emit(report, common, outputs);
 }
 
 }  // namespace gearkit::plugins::gear

@@ -1,10 +1,12 @@
 // `gearkit gear worm`: a cylindrical worm and its wheel (libgear worm.hpp, docs/gear-types.md).
 #include "gear_types_commands.hpp"
 #include "gear_types_common.hpp"
+#include "gear_types_drawing.hpp"
 
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/worm.hpp>
 #include <gearkit/io/command_line.hpp>
+#include <gearkit/io/drawing.hpp>
 #include <gearkit/io/report.hpp>
 
 #include <fmt/format.h>
@@ -26,7 +28,7 @@ constexpr std::string_view kUsage =
     "gearkit gear worm --z1 N --z2 N --module LEN (--q Q | --worm-diameter LEN) [--flank ZA|ZN|ZI|ZK] [--pressure-angle 20] "
     "[--hand right|left] [--x2 X | --centre-distance LEN] [--addendum 1] [--dedendum 1.25] [--friction MU] "
     "[--friction-static 0.15] [--speed1 SPEED] [--torque1 TORQUE | --torque2 TORQUE] [--driver worm|wheel] "
-    "[--format text|json|csv|md|html]";
+    "[--svg FILE] [--dxf FILE] [--format text|json|csv|md|html]";
 
 void add_options(io::po::options_description& desc) {
   auto text = [] { return io::po::value<std::string>(); };
@@ -48,7 +50,9 @@ void add_options(io::po::options_description& desc) {
       ("speed1", text()->value_name("SPEED"), "speed of the worm about its axis, signed (--speed1=-1450rpm) (unit required, e.g. 1450rpm)")
       ("torque1", text()->value_name("TORQUE"), "torque on the worm: forces and efficiency (unit required, e.g. 9kN*m)")
       ("torque2", text()->value_name("TORQUE"), "torque on the wheel, instead of --torque1 (unit required, e.g. 9kN*m)")
-      ("driver", text()->value_name("worm|wheel"), "which gear drives (default worm)");
+      ("driver", text()->value_name("worm|wheel"), "which gear drives (default worm)")
+      ("svg", text()->value_name("FILE"), "write the drawing (wheel mid-plane with the worm's axial section, section through the wheel axis, data block) as SVG")
+      ("dxf", text()->value_name("FILE"), "write the drawing as DXF");
 }
 
 gg::WormInput read_input(const io::po::variables_map& vm) {
@@ -195,7 +199,17 @@ int run_gear_worm_command(plugin::CommandContext& context) {
   if (T1 || T2) forces_table(report, w, T1 ? *T1 : *T2, T1.has_value(), worm_drives);
   report.notes.push_back("Efficiency and forces at the pitch point on the worm's working cylinder d_w1 = 2 a - d2; frames, hands and "
                          "senses: docs/gear-types.md.");
-  return io::emit(report, common, context.out);
+  io::OutputSet outputs(context.out);  // every file committed together, after the report renders
+  if (vm.count("svg") || vm.count("dxf")) {
+    const io::Drawing drawing = worm_drawing(in, w, 1e-3);
+    if (vm.count("svg")) {
+      io::SvgOptions svg;
+      svg.title = fmt::format("gearkit gear worm: z1 = {}, z2 = {}, m_x = {:g} mm", in.z1, in.z2, in.m_x);
+      outputs.add("--svg", vm["svg"].as<std::string>(), io::to_svg(drawing, svg));
+    }
+    if (vm.count("dxf")) outputs.add("--dxf", vm["dxf"].as<std::string>(), io::to_dxf(drawing));
+  }
+  return io::emit(report, common, outputs);
 }
 
 }  // namespace gearkit::plugins::gear

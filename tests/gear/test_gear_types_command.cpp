@@ -1,10 +1,14 @@
 // CLI tests of `gearkit gear rack`, `gearkit gear worm` and `gearkit gear crossed`
 // (plugins/gear/gear_*_command.cpp), run through GEARKIT_EXE.
+#include "dxf_drawing.hpp"
 #include "run_gearkit.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 
 using gearkit::testing::run_gearkit;
@@ -114,4 +118,52 @@ TEST(GearTypesCommand, BadInputExitsWithStatus2AndNamesTheOption) {
     EXPECT_NE(r.err.find(c.option), std::string::npos) << c.args << ": " << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << c.args << ": one line expected: " << r.err;
   }
+}
+
+// The drawings read back by ezdxf (an independent DXF reader): no audit errors, the data block's
+// numbers equal the JSON report of the same run, and no text overlaps another or is crossed by a curve.
+namespace {
+
+bool have_ezdxf() { return std::system("/usr/bin/python3 -c 'import ezdxf' >/dev/null 2>&1") == 0; }
+
+nlohmann::json dump(const std::filesystem::path& dxf) {
+  using gearkit::testing::shell_quote;
+  const std::filesystem::path out = dxf.string() + ".json";
+  const std::string cmd = "/usr/bin/python3 " + shell_quote(std::string(GEARKIT_SOURCE_DIR) + "/tests/gear/dxf_dump.py") + " " +
+                          shell_quote(dxf.string()) + " > " + shell_quote(out.string());
+  EXPECT_EQ(std::system(cmd.c_str()), 0);
+  return nlohmann::json::parse(gearkit::testing::slurp(out));
+}
+
+bool block_has(const nlohmann::json& d, const nlohmann::json& value) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.3f", value.get<double>());
+  for (const auto& t : d["texts"]["data_block"])
+    if (t.get<std::string>().find(b) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(GearTypesDrawing, RackAndWormDrawingsReadBack) {
+  if (!have_ezdxf()) GTEST_SKIP() << "python3-ezdxf not installed";
+  const auto dir = gearkit::testing::scratch_dir("gear-types-drawing");
+  const std::string rack = (dir / "rack.dxf").string(), worm = (dir / "worm.dxf").string(), svg = (dir / "worm.svg").string();
+  auto r = run_gearkit("gear rack --z1 18 --module 2 --x1 0.3 --rack-height 20 --travel 60 --format json --dxf " + rack);
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  auto d = dump(rack);
+  EXPECT_EQ(d["audit_errors"], 0);
+  for (const auto& v : {j["pinion"]["d_a_mm"], j["pinion"]["d_f_mm"], j["mesh"]["H_0_mm"], j["mesh"]["a_back_mm"], j["rack"]["length_mm"]})
+    EXPECT_TRUE(block_has(d, v)) << v;
+  EXPECT_EQ(gearkit::testing::layout_faults(gearkit::testing::drawing_from_dump(d)), "");
+  r = run_gearkit("gear worm --z1 2 --z2 30 --module 3 --worm-diameter 44 --format json --dxf " + worm + " --svg " + svg);
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  d = dump(worm);
+  EXPECT_EQ(d["audit_errors"], 0);
+  for (const auto& v : {j["wheel"]["d_a2_mm"], j["wheel"]["d_e2_mm"], j["wheel"]["r_k_mm"], j["worm"]["d_a1_mm"], j["pair"]["a_mm"]})
+    EXPECT_TRUE(block_has(d, v)) << v;
+  EXPECT_EQ(gearkit::testing::layout_faults(gearkit::testing::drawing_from_dump(d)), "");
+  EXPECT_TRUE(std::filesystem::exists(svg));
 }
