@@ -150,6 +150,7 @@ void geometry(const WormInput& in, WormResult& r) {
 
 void kinematics(const WormInput& in, WormResult& r) {
   r.wheel_sense = (in.right_hand ? -1.0 : 1.0) * in.z1 / in.z2;
+  r.n1 = in.n1;
   r.n2 = r.wheel_sense * in.n1;
   r.v1 = peripheral_velocity(r.d_w1, in.n1);
   r.v2 = peripheral_velocity(r.d2, r.n2);

@@ -141,7 +141,7 @@ struct WormResult {
   double a = 0, x2 = 0, d_w1 = 0, gamma_w = 0, u = 0;
   double b2 = 0, b1 = 0;         ///< recommended wheel face width, shortest worm thread
   double wheel_sense = 0;        ///< omega2 / omega1 about +y / +x: -z1/z2 (right hand), +z1/z2 (left)
-  double n2 = 0;                 ///< wheel speed about +y, 1/min
+  double n1 = 0, n2 = 0;         ///< worm speed about +x (as given), wheel speed about +y, 1/min
   double v1 = 0, v2 = 0, v_g = 0;  ///< pitch-point velocities of worm and wheel, sliding velocity (m/s)
   double mu = 0, rho = 0, rho_static = 0;
   bool mu_from_velocity = false; ///< mu from the AGMA relation of v_g (not given)
