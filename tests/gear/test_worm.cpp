@@ -182,6 +182,7 @@ TEST(Worm, WheelSenseFollowsTheHand) {
 TEST(Worm, SelfLockingIsAWarningAndStopsTheWheelDriving) {
   gg::WormInput in = sheet_pair();
   in.z1 = 1;             // tan gamma = 3/44: 3.90 deg
+  in.flank = gg::WormFlank::ZI;  // alpha_n = 20 deg
   in.mu = 0.08;          // rho' = atan(0.08 / cos 20) = 4.87 deg > gamma
   in.n1 = 100.0;
   const gg::WormResult w = gg::compute_worm(in);
