@@ -32,7 +32,7 @@ std::string deg(double rad) { return io::fixed(rad * kDeg, 3) + "°"; }
 std::vector<io::Layer> layers() {
   std::vector<io::Layer> l = gear_drawing_layers();
   l.push_back({"rack", 1, "#b02020", false});
-  l.push_back({"worm", 1, "#b02020", false});
+  l.push_back({"worm", 5, "#1f4e9a", false});
   l.push_back({"datum_line", 3, "#2a7f2a", true});
   l.push_back({"line_of_action", 4, "#008080", true});
   l.push_back({"outside_circle", 8, "#707070", true});
