@@ -111,7 +111,7 @@ TEST(GearTypesCommand, BadInputExitsWithStatus2AndNamesTheOption) {
                         Case{"worm --z1 2 --z2 30 --module 3 --q 1", "--q"}, Case{"worm --z1 2 --z2 30 --module 3 --q 12 --flank ZX", "--flank"},
                         Case{"rack --z1 12 --module 3 --x1 0.6 --datum-distance 20", "--datum-distance"},
                         Case{"rack --z1 2 --module 3", "--z1"}, Case{"rack --z1 12 --module 3 --mounting-distance 50", "--mounting-distance"},
-                        Case{"crossed --z1 15 --z2 24 --module 3 --helix-angle1 20 --helix-angle2 -20", "--helix-angle2"},
+                        Case{"crossed --z1 15 --z2 24 --module 3 --helix-angle1 20 --helix-angle2=-20", "--helix-angle2"},
                         Case{"crossed --z1 15 --z2 24 --module 3 --helix-angle1 20", "--helix-angle2"}}) {
     const auto r = run_gearkit(std::string("gear ") + c.args);
     EXPECT_EQ(r.status, 2) << c.args << ": " << r.out;
