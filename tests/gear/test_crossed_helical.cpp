@@ -21,8 +21,9 @@ Vec add(const Vec& a, const Vec& b, double k = 1.0) { return {a[0] + k * b[0], a
 Vec scale(const Vec& a, double k) { return {k * a[0], k * a[1], k * a[2]}; }
 double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
 
-// KHK's screw gear layout: m_n = 3, alpha_n = 20 deg, z1 = 15, z2 = 24, beta1 = 20 deg and
-// beta2 = 30 deg, both right hand: Sigma = 50 deg.
+// A screw gear pair of the proportions of KHK's screw gear table: m_n = 3, alpha_n = 20 deg,
+// z1 = 15, z2 = 24, beta1 = 20 deg and beta2 = 30 deg, both right hand: Sigma = 50 deg. Expected
+// values are hand calculations (KHK's printed table was not reachable).
 gg::CrossedHelicalInput khk_pair() {
   gg::CrossedHelicalInput in;
   in.z1 = 15;

@@ -14,8 +14,9 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kAlpha = 20.0 * kDeg;
 
-// KHK's rack-and-pinion layout: m = 3, z = 12, x = 0.6, the datum line H = 32 mm above the rack's
-// back; KHK's mounting distance a = z m / 2 + H + x m = 18 + 32 + 1.8 = 51.8 mm.
+// A pinion of m = 3, z = 12, x = 0.6 (the 12-tooth gear of KHK's profile-shifted example) on a rack
+// whose datum line lies H = 32 mm above its back; KHK's rack-and-pinion formula for the mounting
+// distance, a = z m / 2 + H + x m, by hand: 18 + 32 + 1.8 = 51.8 mm.
 gg::RackPinionInput khk_pinion() {
   gg::RackPinionInput in;
   in.z1 = 12;
