@@ -15,6 +15,7 @@
 #include "gear_size.hpp"
 #include "gear_tolerance_options.hpp"
 #include "gear_tolerance_report.hpp"
+#include "gear_types_commands.hpp"
 
 #include <gearkit/gear/accuracy.hpp>
 #include <gearkit/gear/gear_pair.hpp>
@@ -170,6 +171,9 @@ void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, con
 
 int run_gear_command(plugin::CommandContext& context) {
   if (!context.args.empty() && context.args.front() == "size") return run_gear_size_command(context);
+  if (!context.args.empty() && context.args.front() == "rack") return run_gear_rack_command(context);
+  if (!context.args.empty() && context.args.front() == "worm") return run_gear_worm_command(context);
+  if (!context.args.empty() && context.args.front() == "crossed") return run_gear_crossed_command(context);
   io::po::options_description desc("gearkit gear options (bare numbers: mm and deg; rating: N*m, kW, rpm, h, um)");
   add_gear_options(desc);
   add_tolerance_options(desc);

@@ -262,4 +262,16 @@ void add_ring_cutting_report(io::Report& report, const gg::GearPairInput& in, co
   }
 }
 
+const std::vector<io::Layer>& gear_drawing_layers() { return kLayers; }
+
+io::Polyline outline_polyline(const std::vector<gg::ProfileVertex>& outline, std::string layer) {
+  return to_polyline(outline, std::move(layer));
+}
+
+void draw_centre_mark(io::Drawing& d, double cx, double cy, double size) { centre_mark(d, cx, cy, size); }
+
+void draw_gear_circles(io::Drawing& d, const gg::GearResult& g, double cx, double cy, double side, double h) {
+  circles(d, g, cx, cy, side, h);
+}
+
 }  // namespace gearkit::plugins::gear

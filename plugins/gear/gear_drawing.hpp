@@ -35,4 +35,17 @@ io::Drawing gear_drawing(const gearkit::gear::GearPairInput& input, const gearki
 void add_ring_cutting_report(io::Report& report, const gearkit::gear::GearPairInput& input,
                              const gearkit::gear::GearPairResult& result, const GearCommandOptions& options);
 
+// Pieces the drawings of the other gear types reuse (gear_types_drawing.cpp).
+
+/// The layers of the gear drawings (gear1, gear2, the four circles, working_pitch, centres,
+/// labels, data_block, title_block, frame).
+const std::vector<io::Layer>& gear_drawing_layers();
+/// A closed tooth outline on `layer`.
+io::Polyline outline_polyline(const std::vector<gearkit::gear::ProfileVertex>& outline, std::string layer);
+/// A centre cross of half-size `size` at (cx, cy) on layer "centres".
+void draw_centre_mark(io::Drawing& d, double cx, double cy, double size);
+/// The tip, reference, base and root circles of `g` (its d_a, d, d_b, d_f) centred at (cx, cy),
+/// labelled with their diameters in a column to the left (side < 0) or right (side > 0); text height h.
+void draw_gear_circles(io::Drawing& d, const gearkit::gear::GearResult& g, double cx, double cy, double side, double h);
+
 }  // namespace gearkit::plugins::gear
