@@ -3,6 +3,7 @@
 // Lewis/Hertz) and the tooth-form drawing (SVG/DXF); the pair from options or from a gear-pair
 // file; `gearkit gear size`.
 #include "gear_command.hpp"
+#include "gear_bevel_command.hpp"
 
 #include "gear_drawing.hpp"
 
@@ -170,6 +171,7 @@ void add_drawings(io::OutputSet& outputs, const GearCommandOptions& options, con
 
 int run_gear_command(plugin::CommandContext& context) {
   if (!context.args.empty() && context.args.front() == "size") return run_gear_size_command(context);
+  if (!context.args.empty() && context.args.front() == "bevel") return run_gear_bevel_command(context);
   io::po::options_description desc("gearkit gear options (bare numbers: mm and deg; rating: N*m, kW, rpm, h, um)");
   add_gear_options(desc);
   add_tolerance_options(desc);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -322,9 +323,10 @@ TEST(BevelForces, BhandariStraightBevelExample) {
 // The forces as a vector: the tooth normal at the mean point built from the hand's definition
 // (AGMA 1012: outer half inclined clockwise seen from the apex side for a right hand), the
 // pressure angle and the rolling condition, scaled to the torque, then resolved on each gear's
-// axis and radius. Every hand, sense, driver and three shaft angles.
+// axis and radius. Every hand, sense, driver and three shaft angles; the power balance with the
+// speeds of the rolling cones.
 struct VectorForces {
-  double F_a[2], F_r[2], T[2], power;
+  double F_a[2], F_r[2], T[2], speed_ratio;
 };
 
 VectorForces forces_by_vectors(const gg::BevelPairInput& in, const gg::BevelPairResult& r, gg::SpiralHand hand1,
@@ -359,7 +361,7 @@ VectorForces forces_by_vectors(const gg::BevelPairInput& in, const gg::BevelPair
   out.F_r[1] = -dot(F2, r2);
   out.T[0] = std::fabs(dot(cross(P, F1), k.a1)) / 1000.0;
   out.T[1] = std::fabs(dot(cross(P, F2), k.a2)) / 1000.0;
-  out.power = dot(F1, cross(omega1, P)) + dot(F2, cross(omega2, P));  // virtual power, must vanish
+  out.speed_ratio = norm(omega2) / norm(omega1);
   return out;
 }
 
@@ -389,7 +391,9 @@ TEST(BevelForces, MatchTheToothNormalResolvedOnTheCones) {
               EXPECT_NEAR(f.gear[i].F_r, v.F_r[i], 1e-9 * f.gear[i].F_t) << "gear " << i + 1;
               EXPECT_NEAR(f.gear[i].T, v.T[i], 1e-9 * T) << "gear " << i + 1;
             }
-            EXPECT_NEAR(v.power, 0.0, 1e-9 * T);
+            // Power balance: T1 omega1 = T2 omega2 with the speeds of the rolling pitch cones.
+            EXPECT_NEAR(f.gear[0].T, f.gear[1].T * v.speed_ratio, 1e-9 * T);
+            EXPECT_NEAR(v.speed_ratio, 13.0 / 29.0, 1e-12);
           }
     }
   }
