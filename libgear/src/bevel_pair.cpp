@@ -42,8 +42,8 @@ void validate(const BevelPairInput& in) {
 void check_cones(const BevelPairInput& in, double delta1, double delta2, double R_e) {
   for (const double delta : {delta1, delta2})
     if (!(delta < 0.5 * std::numbers::pi - 1e-9))
-      throw GeometryError("shaft_angle", fmt::format("a pitch cone angle of {:.4f} deg: crown gears (90 deg) and internal bevel gears "
-                                                     "(over 90 deg) are not covered; reduce the shaft angle", delta * kDeg));
+      throw GeometryError("shaft_angle", fmt::format("expected pitch cone angles below 90 deg, found {:.4f} deg: crown gears (90 deg) and "
+                                                     "internal bevel gears (over 90 deg) are not covered", delta * kDeg));
   if (!(in.b > 0.0 && in.b < R_e))
     throw GeometryError("face_width", fmt::format("expected 0 < b < R_e = {:.3f} mm, found {:g} mm", R_e, in.b));
 }

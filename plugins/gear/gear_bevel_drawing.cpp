@@ -135,8 +135,9 @@ io::Drawing bevel_drawing(const gg::BevelPairInput& in, const gg::BevelPairResul
   angle_arc(d, 0.45 * r.R_e, d1, in.Sigma, fmt::format("delta2 = {}°", deg(r.gear[1].delta)), h);
   angle_arc(d, 0.18 * r.R_e, 0.0, in.Sigma, fmt::format("Sigma = {}°", deg(in.Sigma)), h);
   // Face width along the pitch cone, and the outer tip diameters at the crowns.
-  const P2 mid = r.R_m * gen + (r.gear[0].h_ae + 2.0 * h) * c1;
-  io::add_label(d, mid.x, mid.y, mid.x - 4.0 * h, mid.y + 6.0 * h, fmt::format("b = {} mm, R_e = {} mm", mm(in.b), mm(r.R_e)), h, "labels");
+  // The face width at gear 1's tooth on the far side of its axis, where nothing else is drawn.
+  const P2 mid{r.R_m * gen.x, -r.R_m * gen.y};
+  io::add_label(d, mid.x, mid.y, mid.x + 3.0 * h, mid.y - 8.0 * h, fmt::format("b = {} mm, R_e = {} mm", mm(in.b), mm(r.R_e)), h, "labels");
   for (int i = 0; i < 2; ++i) {
     const P2 axis = i == 0 ? a1 : a2, c = i == 0 ? c1 : (-1.0) * c1;
     const P2 crown = r.R_e * gen + r.gear[i].h_ae * c;

@@ -142,3 +142,33 @@ TEST(GearBevelCommand, WarningsAndBadInput) {
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   }
 }
+
+// The drawing: both files written with the report, on the documented layers, with the data block
+// carrying the table's values (KHK example: d_ae2 = 121.758, delta_a1 = 30.4870).
+TEST(GearBevelCommand, DrawingFiles) {
+  const fs::path dir = fs::temp_directory_path() / ("gearkit-bevel-draw-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path svg = dir / "pair.svg", dxf = dir / "pair.dxf";
+  const CliRun r = run("--z1 20 --z2 40 --module 3 --face-width 22 --svg '" + svg.string() + "' --dxf '" + dxf.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto read = [](const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+  };
+  const std::string s = read(svg), d = read(dxf);
+  for (const char* layer : {"gear1", "gear2", "axes", "pitch_cone", "back_cone", "data_block"}) {
+    EXPECT_NE(s.find(std::string("layer-") + layer), std::string::npos) << layer;
+    EXPECT_NE(d.find(layer), std::string::npos) << layer;
+  }
+  for (const char* value : {"121.758", "30.4870", "58.195"}) {
+    EXPECT_NE(s.find(value), std::string::npos) << value;
+    EXPECT_NE(d.find(value), std::string::npos) << value;
+  }
+  // A refused option leaves no file behind.
+  fs::remove(svg);
+  EXPECT_EQ(run("--z1 20 --z2 40 --module 3 --face-width 80 --svg '" + svg.string() + "'").status, 2);
+  EXPECT_FALSE(fs::exists(svg));
+  fs::remove_all(dir);
+}
