@@ -108,7 +108,7 @@ TEST(GearBevelCommand, TextAndOtherFormats) {
   ASSERT_EQ(t.status, 0) << t.err;
   EXPECT_NE(t.out.find("outer tip diameter d_ae [mm]"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("67.2180"), std::string::npos);
-  for (const char* format : {"csv", "md", "html"}) {
+  for (const char* format : {"csv --table gears", "md", "html"}) {
     const CliRun r = run(std::string("--z1 20 --z2 40 --module 3 --face-width 22 --format ") + format);
     EXPECT_EQ(r.status, 0) << format << ": " << r.err;
     EXPECT_NE(r.out.find("121.7575"), std::string::npos) << format;
