@@ -113,7 +113,7 @@ void pair_rows(Rows& r, const gg::BevelPairInput& in, const gg::BevelPairResult&
 }
 
 void add_forces(io::Report& report, const gg::BevelPairInput& in, const gg::BevelForces& f) {
-  io::Table t{"Forces at the mean point (F_r > 0 towards the gear's axis, F_a > 0 away from the apex)", {"quantity", "gear 1", "gear 2"}, {}};
+  io::Table t{"Forces", {"quantity", "gear 1", "gear 2"}, {}};
   nlohmann::json& j = report.json["forces"];
   Rows r(t, j);
   const auto& a = f.gear[0];
@@ -130,6 +130,8 @@ void add_forces(io::Report& report, const gg::BevelPairInput& in, const gg::Beve
   r.both("normal tooth force", "F_n", "N", a.F_n, b.F_n, 2);
   j["beta_s_deg"] = io::json_number(f.beta_s * kDeg);
   report.tables.push_back(std::move(t));
+  report.notes.push_back("Forces at the mean point of the face width, no friction: F_r > 0 towards the gear's own axis, F_a > 0 along "
+                         "its axis away from the apex (out of mesh); F_t opposes the driving gear's rotation and drives the driven one.");
   if (in.type == gg::BevelType::spiral) {
     const int driver = a.driving ? 0 : 1;
     report.notes.push_back(fmt::format("The axial force on the driving gear {} points {} (hand {} of gear 1, {} seen from its back); "
