@@ -401,10 +401,13 @@ TEST(BevelForces, MatchTheToothNormalResolvedOnTheCones) {
   }
 }
 
-// Hand derivation of the classic rule (Gleason; Budynas ch. 13): a driving pinion with a left-hand
-// spiral turning clockwise, or a right-hand one turning counter-clockwise (seen from its back),
-// is pushed away from the apex, out of mesh; reversing the sense reverses the spiral term, so
-// with beta = 35 deg and a small pinion cone the thrust turns towards the apex.
+// Hand derivation of the classic rule (Gleason; Budynas and Nisbett, Shigley's MED, ch. 13, spiral
+// bevel forces W_a = W_t/cos psi (tan phi_n sin gamma -+ sin psi cos gamma), W_r = W_t/cos psi
+// (tan phi_n cos gamma +- sin psi sin gamma), upper signs for a driving pinion with a right-hand
+// spiral turning clockwise seen from its large end, or left-hand counter-clockwise): so a
+// left-hand driving pinion turning clockwise, or a right-hand one counter-clockwise, is pushed
+// away from the apex, out of mesh; reversing the sense reverses the spiral term, and with
+// beta = 35 deg and a small pinion cone the thrust then points towards the apex.
 TEST(BevelForces, SpiralThrustChangesDirectionWithTheSense) {
   gg::BevelPairInput in;
   in.z1 = 13;
@@ -423,6 +426,8 @@ TEST(BevelForces, SpiralThrustChangesDirectionWithTheSense) {
   const double F_t = 2000.0 * 100.0 / r.gear[0].d_m, d = std::atan(1.0 / 3.0), b = 35.0 * kDeg, a = 20.0 * kDeg;
   EXPECT_NEAR(out_of_mesh.gear[0].F_a, F_t / std::cos(b) * (std::tan(a) * std::sin(d) + std::sin(b) * std::cos(d)), 1e-9);
   EXPECT_NEAR(into_mesh.gear[0].F_a, F_t / std::cos(b) * (std::tan(a) * std::sin(d) - std::sin(b) * std::cos(d)), 1e-9);
+  EXPECT_NEAR(into_mesh.gear[0].F_r, F_t / std::cos(b) * (std::tan(a) * std::cos(d) + std::sin(b) * std::sin(d)), 1e-9);
+  EXPECT_NEAR(out_of_mesh.gear[0].F_r, F_t / std::cos(b) * (std::tan(a) * std::cos(d) - std::sin(b) * std::sin(d)), 1e-9);
   EXPECT_EQ(out_of_mesh.gear[1].rotation, gg::Rotation::ccw);
 }
 
