@@ -3,6 +3,7 @@
 // Lewis/Hertz) and the tooth-form drawing (SVG/DXF); the pair from options or from a gear-pair
 // file; `gearkit gear size`.
 #include "gear_command.hpp"
+#include "gear_bevel_command.hpp"
 
 #include "gear_drawing.hpp"
 
@@ -174,6 +175,7 @@ int run_gear_command(plugin::CommandContext& context) {
   if (!context.args.empty() && context.args.front() == "rack") return run_gear_rack_command(context);
   if (!context.args.empty() && context.args.front() == "worm") return run_gear_worm_command(context);
   if (!context.args.empty() && context.args.front() == "crossed") return run_gear_crossed_command(context);
+  if (!context.args.empty() && context.args.front() == "bevel") return run_gear_bevel_command(context);
   io::po::options_description desc("gearkit gear options (bare numbers: mm and deg; rating: N*m, kW, rpm, h, um)");
   add_gear_options(desc);
   add_tolerance_options(desc);

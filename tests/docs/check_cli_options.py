@@ -18,7 +18,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SUBCOMMANDS = ["gear size", "gear rack", "gear worm", "gear crossed", "train synth", "synth path"]
+SUBCOMMANDS = ["gear size", "gear bevel", "gear rack", "gear worm", "gear crossed", "train synth", "synth path"]
 # An option whose value name (or NAME=VALUE part) is one of these takes a physical quantity.
 QUANTITY_VALUES = {"LEN", "ANGLE", "SPEED", "POWER", "TORQUE", "TIME", "RATE", "MODULE", "START:END:STEP"}
 RULE = re.compile(r"\((?:bare number: (?P<unit>[^()]+)|unit required, e\.g\. (?P<example>[^()]+))\)$")
