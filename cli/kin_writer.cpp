@@ -37,6 +37,10 @@ KinWriter::KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, cons
   if (r.common.format == io::Format::json && !r.common.table.empty())
     io::fail_option("--table", "expected no --table with --format json (it holds every table), found one");
   whole_ = rendered_whole(r.common, rows_.table());
+  // A CSV of another table: the positions are not written, so none is kept (a sweep of a million
+  // positions held them all) unless --table could still name them (a prefix of their key).
+  positions_written_ = !(whole_ && r.common.format == io::Format::csv &&
+                         io::table_key(rows_.table().title, 1).rfind(r.common.table, 0) != 0);
   if (whole_) {
     files_.reserve("--output", r.common.output);
     whole_rows_ = rows_.table();
@@ -85,14 +89,14 @@ void KinWriter::begin(const KinPosition* first) {
 void KinWriter::write_row(const KinPosition& p) {
   ++written_;
   if (whole_) {
-    if ((written_ - 1) % html_stride_ != 0) {
+    if (!positions_written_ || (written_ - 1) % html_stride_ != 0) {
       // Not on the page, but a non-finite value in it is still a warning: its JSON is written
       // (and dropped) for the writer to remember the paths of such values.
       skipped_json_.clear();
       rows_.json(p, skipped_writer_);
       return;
     }
-    whole_json_ += written_ == 1 ? "[" : ",";
+    whole_json_ += whole_json_.empty() ? "[" : ",";
     rows_.json(p, whole_writer_);
     rows_.cells(p, cells_);
     whole_rows_.add_row(cells_);
@@ -198,7 +202,7 @@ int KinWriter::finish_whole(io::Report tail) {
   whole.notes.insert(whole.notes.end(), tail.notes.begin(), tail.notes.end());
   whole.warnings.insert(whole.warnings.end(), tail.warnings.begin(), tail.warnings.end());
   for (const auto& [key, value] : tail.json.items()) whole.json[key] = value;
-  whole.json["positions"] = nlohmann::json::parse(written_ == 0 ? std::string("[]") : whole_json_ + "]");
+  whole.json["positions"] = nlohmann::json::parse(whole_json_.empty() ? std::string("[]") : whole_json_ + "]");
   if (html_stride_ > 1) {
     whole.json["positions_shown_every"] = html_stride_;
     whole.json["positions_swept"] = written_;

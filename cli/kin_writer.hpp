@@ -81,6 +81,7 @@ class KinWriter {
   std::optional<KinPosition> last_;
   long stride_ = 1, seen_ = 0;
   long html_stride_ = 1;  // whole_ HTML: every html_stride_-th position is on the page
+  bool positions_written_ = true;  // false: a CSV of another table, the positions' rows are not kept
   std::vector<long> undefined_rates_;  // per output: positions where a speed's rate is undefined
   long seen_positions_ = 0;
   long wedged_ = 0;          // positions of a sweep where friction wedges the mechanism

@@ -203,7 +203,7 @@ TEST(LimitsMemory, HtmlSweepsShowAtMostTwoThousandPositions) {
   const std::string html = gearkit::testing::slurp(page);
   EXPECT_LT(html.size(), 20u << 20);  // 386 MB before
   EXPECT_NE(html.find("one position in 50 (2000 of the 100000 positions swept"), std::string::npos);
-  const std::size_t table = html.find("<h2 id=\"positions\">");
+  const std::size_t table = html.find("<h2 id=\"sweep\">");
   ASSERT_NE(table, std::string::npos);
   const std::size_t end = html.find("</table>", table);
   long rows = 0;
