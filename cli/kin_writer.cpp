@@ -3,6 +3,7 @@
 #include "kin_units.hpp"
 
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/report_output.hpp>
 #include <gearkit/kin/fourbar.hpp>
 
@@ -37,10 +38,15 @@ KinWriter::KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, cons
   if (r.common.format == io::Format::json && !r.common.table.empty())
     io::fail_option("--table", "expected no --table with --format json (it holds every table), found one");
   whole_ = rendered_whole(r.common, rows_.table());
+  // A CSV of another table: the positions are not written, so none is kept (a sweep of a million
+  // positions held them all) unless --table could still name them (a prefix of their key).
+  positions_written_ = !(whole_ && r.common.format == io::Format::csv &&
+                         io::table_key(rows_.table().title, 1).rfind(r.common.table, 0) != 0);
   if (whole_) {
     files_.reserve("--output", r.common.output);
     whole_rows_ = rows_.table();
     whole_writer_.set_path_prefix("positions[]");
+    skipped_writer_.set_path_prefix("positions[]");
   } else {
     stream_.emplace(files_.stream("--output", r.common.output), r.common.format);
     stream_->set_csv_streamed_table_only(r.common.format == io::Format::csv && r.common.table != "all");
@@ -52,6 +58,8 @@ KinWriter::KinWriter(const mechanism::Mechanism& mech, const KinRequest& r, cons
 
 void KinWriter::plan(double first, double last, long count) {
   stride_ = std::max(1L, (count + kAnimationFrames - 1) / kAnimationFrames);
+  if (whole_ && r_.common.format == io::Format::html)
+    html_stride_ = std::max(1L, (count + io::limits::kHtmlTableRows - 1) / io::limits::kHtmlTableRows);
   if (r_.plot) plot_.emplace(mech_, r_.driver, shown_input(mech_, r_.driver, first), shown_input(mech_, r_.driver, last), count);
   if (coupler_points_) coupler_.emplace(*coupler_points_, count);
   // A long streamed sweep writes its rows on a second thread (kin_row_pipeline.hpp); a short one
@@ -82,7 +90,14 @@ void KinWriter::begin(const KinPosition* first) {
 void KinWriter::write_row(const KinPosition& p) {
   ++written_;
   if (whole_) {
-    whole_json_ += written_ == 1 ? "[" : ",";
+    if (!positions_written_ || (written_ - 1) % html_stride_ != 0) {
+      // Not on the page, but a non-finite value in it is still a warning: its JSON is written
+      // (and dropped) for the writer to remember the paths of such values.
+      skipped_json_.clear();
+      rows_.json(p, skipped_writer_);
+      return;
+    }
+    whole_json_ += whole_json_.empty() ? "[" : ",";
     rows_.json(p, whole_writer_);
     rows_.cells(p, cells_);
     whole_rows_.add_row(cells_);
@@ -189,16 +204,26 @@ void KinWriter::fill_pictures(const KinAnalysis& a, io::Report& tail) {
 
 int KinWriter::finish_whole(io::Report tail) {
   io::Report whole = kin_report_head(mech_, dof_, r_.driver);
+  const std::size_t shown = whole_rows_.rows.size();
   whole.tables.push_back(std::move(whole_rows_));
   for (io::Table& t : tail.tables) whole.tables.push_back(std::move(t));
   whole.notes.insert(whole.notes.end(), tail.notes.begin(), tail.notes.end());
   whole.warnings.insert(whole.warnings.end(), tail.warnings.begin(), tail.warnings.end());
   for (const auto& [key, value] : tail.json.items()) whole.json[key] = value;
-  whole.json["positions"] = nlohmann::json::parse(written_ == 0 ? std::string("[]") : whole_json_ + "]");
+  whole.json["positions"] = nlohmann::json::parse(whole_json_.empty() ? std::string("[]") : whole_json_ + "]");
+  if (html_stride_ > 1) {
+    whole.json["positions_shown_every"] = html_stride_;
+    whole.json["positions_swept"] = written_;
+    whole.notes.push_back(fmt::format("The positions table shows one position in {} ({} of the {} positions swept, from "
+                                      "the first; a page holds at most {}): the warnings, dead points and extremes are of "
+                                      "every position, and --format csv or json writes them all.",
+                                      html_stride_, shown, written_, io::limits::kHtmlTableRows));
+  }
   // The positions' JSON was written as text: its non-finite values are nulls there already.
   std::vector<std::string> names = io::non_finite_quantities(whole);
-  for (const std::string& p : whole_writer_.non_finite_paths())
-    if (std::find(names.begin(), names.end(), "'" + p + "'") == names.end()) names.push_back("'" + p + "'");
+  for (const io::JsonWriter* w : {&whole_writer_, &skipped_writer_})
+    for (const std::string& p : w->non_finite_paths())
+      if (std::find(names.begin(), names.end(), "'" + p + "'") == names.end()) names.push_back("'" + p + "'");
   for (std::string& w : io::non_finite_warnings(names)) whole.warnings.push_back(std::move(w));
   files_.fill("--output", io::render_for_output(whole, r_.common, files_));
   files_.commit();

@@ -1,7 +1,9 @@
 #pragma once
 // `gearkit kin`: where the positions go as they are solved. Most reports stream (text, Markdown,
 // JSON, CSV of the positions table): rows leave as they come and memory does not grow with the
-// sweep. An HTML page, or a CSV of another table (--table), is rendered whole at the end.
+// sweep. An HTML page, or a CSV of another table (--table), is rendered whole at the end; a page
+// keeps at most io::limits::kHtmlTableRows positions (every k-th of a longer sweep), so that its
+// memory and size do not grow with the sweep either.
 #include "kin_analysis.hpp"
 #include "kin_coupler.hpp"
 #include "kin_plot.hpp"
@@ -73,12 +75,16 @@ class KinWriter {
   io::Table whole_rows_;      // whole_: the positions table
   std::string whole_json_;    // whole_: the positions as a JSON array, "[...]"
   io::JsonWriter whole_writer_{whole_json_};
+  std::string skipped_json_;  // whole_ HTML: a position left off the page, as JSON, for its non-finite values
+  io::JsonWriter skipped_writer_{skipped_json_};
   std::optional<KinPlot> plot_;
   std::optional<std::vector<CouplerPoint>> coupler_points_;
   std::optional<CouplerPaths> coupler_;
   std::vector<KinPosition> frames_;
   std::optional<KinPosition> last_;
   long stride_ = 1, seen_ = 0;
+  long html_stride_ = 1;  // whole_ HTML: every html_stride_-th position is on the page
+  bool positions_written_ = true;  // false: a CSV of another table, the positions' rows are not kept
   std::vector<long> undefined_rates_;  // per output: positions where a speed's rate is undefined
   long seen_positions_ = 0;
   long wedged_ = 0;          // positions of a sweep where friction wedges the mechanism

@@ -12,7 +12,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace gearkit::io {
 
@@ -101,10 +100,18 @@ YamlDocument load_yaml_file(const std::string& path, std::uintmax_t max_bytes) {
   note_input_file(path);  // no output of this run may replace it
   std::ifstream in(path, std::ios::binary);
   if (!in) fail_at({path, 0, 0}, fmt::format("expected a readable file, found: {}", std::strerror(errno)));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  // Read into one string of the file's size (a stringstream held the text twice); then whatever
+  // follows (a file that grows, or one whose size is not known), up to the limit.
+  std::string text(ec ? std::uintmax_t{0} : size, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  for (char chunk[1 << 16]; in && text.size() <= max_bytes;) {
+    in.read(chunk, sizeof chunk);
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) fail_at({path, 0, 0}, "expected a readable file, found a read error");
-  std::string text = buffer.str();
+  if (text.size() > max_bytes)
+    fail_at({path, 0, 0}, fmt::format("expected a model file of at most {} MiB, found more", max_bytes >> 20));
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     fail_at({path, 0, 0}, "expected a YAML model, found an empty file");
   return parse_checked(text, path);
@@ -125,6 +132,17 @@ SourceMark mark_of(const YAML::Node& node, const std::string& file) {
 std::string scalar_text(const YAML::Node& node, const std::string& file, std::string_view what) {
   if (!node.IsScalar()) fail_at(mark_of(node, file), fmt::format("expected {}, found {}", what, describe_node(node)));
   return node.Scalar();
+}
+
+void check_size(const YAML::Node& node, const std::string& file, std::size_t at_most, std::string_view items,
+                std::string_view what) {
+  if (!(node.IsSequence() || node.IsMap()) || node.size() <= at_most) return;
+  auto first_beyond = node.begin();
+  for (std::size_t i = 0; i < at_most; ++i) ++first_beyond;
+  const YAML::Node here = node.IsMap() ? first_beyond->first : YAML::Node(*first_beyond);
+  fail_at(mark_of(here, file), fmt::format("expected at most {} {} in {}, found {} (the first beyond the limit here; "
+                                           "docs/cli.md, Limits)",
+                                           at_most, items, what, node.size()));
 }
 
 double scalar_quantity(const YAML::Node& node, const std::string& file, Quantity q, std::string_view default_unit) {
@@ -272,6 +290,11 @@ std::vector<YAML::Node> MapReader::sequence(const std::string& key) {
   items.reserve(n.size());
   for (const auto& item : n) items.push_back(item);
   return items;
+}
+
+std::vector<YAML::Node> MapReader::sequence(const std::string& key, std::size_t at_most, std::string_view items) {
+  check_size(get(key), file_, at_most, items, fmt::format("'{}' of {}", key, what_));
+  return sequence(key);
 }
 
 void MapReader::finish() const {

@@ -44,7 +44,8 @@ SourceMark source_mark(const yaml_mark_t& m, const std::string& name) {
 // collection at once, a collection when it ends; a mapping's key waits for its value.
 class DocumentBuilder {
  public:
-  explicit DocumentBuilder(const std::string& name) : name_(name) {}
+  /// @param nodes the nodes of the text so far, counted across its documents
+  DocumentBuilder(const std::string& name, long& nodes) : name_(name), nodes_(nodes) {}
 
   void scalar(const yaml_event_t& e) {
     const auto& s = e.data.scalar;
@@ -82,6 +83,7 @@ class DocumentBuilder {
   }
 
   void alias(const yaml_event_t& e) {
+    count(e);
     const auto found = anchors_.find(reinterpret_cast<const char*>(e.data.alias.anchor));
     if (found == anchors_.end())
       fail_at(source_mark(e.start_mark, name_),
@@ -100,7 +102,16 @@ class DocumentBuilder {
 
   static std::string tag_text(const yaml_char_t* tag) { return reinterpret_cast<const char*>(tag); }
 
+  // Every node counts, aliases too: a node beyond the limit is refused before yaml-cpp builds it.
+  void count(const yaml_event_t& e) {
+    if (++nodes_ > kMaxYamlNodes)
+      fail_at(source_mark(e.start_mark, name_),
+              fmt::format("expected a model of at most {} YAML nodes (values, keys, lists and mappings), found more",
+                          kMaxYamlNodes));
+  }
+
   YAML::detail::node& create(const yaml_event_t& e, const yaml_char_t* anchor) {
+    count(e);
     YAML::detail::node& n = memory_->create_node();
     n.set_mark(mark_of_event(e.start_mark));
     if (anchor) anchors_[reinterpret_cast<const char*>(anchor)] = &n;
@@ -128,6 +139,7 @@ class DocumentBuilder {
   std::vector<Open> open_;
   std::map<std::string, YAML::detail::node*, std::less<>> anchors_;
   YAML::detail::node* root_ = nullptr;
+  long& nodes_;
 };
 
 // libyaml's problem, with its context when it has one, as one line at the problem's place.
@@ -171,11 +183,12 @@ std::vector<YAML::Node> parse_yaml_documents(std::string_view text, const std::s
   Parser parser(text);
   std::vector<YAML::Node> documents;
   std::unique_ptr<DocumentBuilder> document;
+  long nodes = 0;
   for (;;) {
     const yaml_event_t& e = parser.next(name);
     switch (e.type) {
       case YAML_STREAM_END_EVENT: return documents;
-      case YAML_DOCUMENT_START_EVENT: document = std::make_unique<DocumentBuilder>(name); break;
+      case YAML_DOCUMENT_START_EVENT: document = std::make_unique<DocumentBuilder>(name, nodes); break;
       case YAML_DOCUMENT_END_EVENT: documents.push_back(document->root()); break;
       case YAML_SCALAR_EVENT: document->scalar(e); break;
       case YAML_ALIAS_EVENT: document->alias(e); break;

@@ -36,7 +36,7 @@ Eigen::Vector2d read_xy(const YAML::Node& node, const std::string& file, Quantit
                         std::string_view what) {
   if (!node.IsSequence() || node.size() != 2)
     fail_at(mark_of(node, file), std::string("expected ") + std::string(what) + " as [x, y], found " +
-                                     (node.IsScalar() ? "'" + node.Scalar() + "'" : std::string("something else")));
+                                     (node.IsScalar() ? io::quote(node.Scalar()) : std::string("something else")));
   return {scalar_quantity(node[0], file, q, unit), scalar_quantity(node[1], file, q, unit)};
 }
 
@@ -62,11 +62,11 @@ class Reader {
     if (auto g = root.optional_node("ground")) read_ground(*g);
     read_links(root.node("links"));
     std::vector<YAML::Node> joints;
-    if (root.has("joints")) joints = root.sequence("joints");
+    if (root.has("joints")) joints = root.sequence("joints", io::limits::kMechanismItems, "joints");
     std::vector<YAML::Node> elements;
-    if (root.has("elements")) elements = root.sequence("elements");
+    if (root.has("elements")) elements = root.sequence("elements", io::limits::kMechanismItems, "elements");
     std::vector<YAML::Node> drivers;
-    if (root.has("drivers")) drivers = root.sequence("drivers");
+    if (root.has("drivers")) drivers = root.sequence("drivers", io::limits::kMechanismItems, "drivers");
     for (const YAML::Node& j : joints) read_joint(j);
     place_links();
     for (const YAML::Node& e : elements) read_element(e);
@@ -74,7 +74,7 @@ class Reader {
     if (auto loads = root.optional_node("loads")) read_loads(*loads);
     check_unknown_loads();
     if (root.has("outputs"))
-      for (const YAML::Node& o : root.sequence("outputs")) read_output(o);
+      for (const YAML::Node& o : root.sequence("outputs", io::limits::kMechanismItems, "outputs")) read_output(o);
     root.optional_node("equations");  // the course's coordinates: read by `kin --equations` (libsym)
     root.finish();
     return std::move(mech_);
@@ -87,9 +87,10 @@ class Reader {
 
   void read_ground(const YAML::Node& node) {
     if (!node.IsMap()) fail(node, "expected 'ground' as a mapping of point names to [x, y], found something else");
+    io::check_size(node, doc_.file, io::limits::kMechanismItems, "points", "'ground'");
     for (auto it = node.begin(); it != node.end(); ++it) {
       const std::string name = scalar(it->first, doc_.file, "a ground point name");
-      if (mech_.model.ground().point(name)) fail(it->first, "duplicate ground point '" + name + "'");
+      if (mech_.model.ground().point(name)) fail(it->first, "duplicate ground point " + io::quote(name));
       mech_.model.ground().points.emplace_back(name, read_xy(it->second, doc_.file, Quantity::length, "mm", "a ground point"));
     }
   }
@@ -98,19 +99,21 @@ class Reader {
     if (!node.IsMap() || node.size() == 0)
       fail(node, "expected 'links' as a mapping of link names to their points, found " +
                      std::string(node.IsMap() ? "an empty mapping" : "something else"));
+    io::check_size(node, doc_.file, io::limits::kMechanismLinks, "links", "'links'");
     for (auto it = node.begin(); it != node.end(); ++it) {
       kin::Body b;
       b.name = scalar(it->first, doc_.file, "a link name");
       if (b.name == "ground" || b.name.find('.') != std::string::npos || b.name.empty())
-        fail(it->first, "expected a link name without '.' other than 'ground', found '" + b.name + "'");
-      if (mech_.model.body_index(b.name)) fail(it->first, "duplicate link '" + b.name + "'");
-      MapReader link(it->second, doc_.file, "link '" + b.name + "'");
+        fail(it->first, "expected a link name without '.' other than 'ground', found " + io::quote(b.name));
+      if (mech_.model.body_index(b.name)) fail(it->first, "duplicate link " + io::quote(b.name));
+      MapReader link(it->second, doc_.file, "link " + io::quote(b.name));
       const YAML::Node points = link.node("points");
       if (!points.IsMap() || points.size() == 0)
-        fail(points, "expected the points of link '" + b.name + "' as a mapping name: [x, y], found something else");
+        fail(points, "expected the points of link " + io::quote(b.name) + " as a mapping name: [x, y], found something else");
+      io::check_size(points, doc_.file, io::limits::kMechanismItems, "points", "a link");
       for (auto p = points.begin(); p != points.end(); ++p) {
         const std::string pname = scalar(p->first, doc_.file, "a point name");
-        if (b.point(pname)) fail(p->first, "duplicate point '" + pname + "' in link '" + b.name + "'");
+        if (b.point(pname)) fail(p->first, "duplicate point " + io::quote(pname) + " in link " + io::quote(b.name));
         b.points.emplace_back(pname, read_xy(p->second, doc_.file, Quantity::length, "mm", "a point"));
       }
       b.angle_guess = link.quantity_or("angle", Quantity::angle, "deg", 0.0);
@@ -123,7 +126,7 @@ class Reader {
       if (auto com = link.optional_node("centre_of_mass")) {
         if (com->IsScalar()) {
           const auto p = b.point(com->Scalar());
-          if (!p) fail(*com, "expected a point of link '" + b.name + "' or [x, y], found '" + com->Scalar() + "'");
+          if (!p) fail(*com, "expected a point of link " + io::quote(b.name) + " or [x, y], found " + io::quote(com->Scalar()));
           b.centre_of_mass = *p;
         } else {
           b.centre_of_mass = read_xy(*com, doc_.file, Quantity::length, "mm", "the centre of mass");
@@ -164,7 +167,7 @@ class Reader {
 
   std::string unique_name(std::optional<std::string> name, const std::string& prefix, const YAML::Node& node) {
     std::string n = name ? *name : prefix + " " + std::to_string(mech_.model.constraints().size() + 1);
-    if (mech_.model.constraint_index(n)) fail(node, "duplicate joint, element or driver name '" + n + "'");
+    if (mech_.model.constraint_index(n)) fail(node, "duplicate joint, element or driver name " + io::quote(n));
     return n;
   }
 
@@ -198,7 +201,7 @@ class Reader {
     } else {
       const BodyPoint moving = point_ref(j.node(type == "prismatic" ? "slider" : "pin"));
       const BodyPoint guide = point_ref(j.node(type == "prismatic" ? "guide" : "slot"));
-      if (moving.body == guide.body) fail(node, "the two sides of joint '" + name + "' are the same link");
+      if (moving.body == guide.body) fail(node, "the two sides of joint " + io::quote(name) + " are the same link");
       const double axis = j.quantity("axis", Quantity::angle, "deg");
       const Eigen::Vector2d u(std::cos(axis), std::sin(axis));
       if (type == "prismatic") {
@@ -220,7 +223,7 @@ class Reader {
     PendingContact c;
     c.circle = point_ref(j.node("circle"));
     c.line = point_ref(j.node("line"));
-    if (c.circle.body == c.line.body) fail(node, "the two sides of joint '" + name + "' are the same link");
+    if (c.circle.body == c.line.body) fail(node, "the two sides of joint " + io::quote(name) + " are the same link");
     c.radius = j.quantity_or("radius", Quantity::length, "mm", 0.0);
     if (!(c.radius >= 0.0)) fail(j.node("radius"), "expected a radius >= 0");
     const double axis = j.quantity("axis", Quantity::angle, "deg");
@@ -329,9 +332,9 @@ class Reader {
     const std::string type = keys.string("type");
     const ElementTypeSpec* spec = elements_ ? elements_(type) : nullptr;
     if (!spec || !spec->read)
-      fail_at(keys.mark("type"), "unknown element type '" + type + "' (no loaded plugin provides it; see `gearkit plugins`)");
+      fail_at(keys.mark("type"), "unknown element type " + io::quote(type) + " (no loaded plugin provides it; see `gearkit plugins`)");
     const std::string name = unique_name(keys.optional_string("name"), type, node);
-    MapReader element(node, doc_.file, type + " '" + name + "'");
+    MapReader element(node, doc_.file, type + " " + io::quote(name));
     element.string("type");
     element.optional_string("name");
     ElementReader reader(element, mech_.model);
@@ -341,7 +344,7 @@ class Reader {
     } catch (const kin::ElementError& e) {
       fail_at(element.mark(e.field()), e.what());
     }
-    if (!c) fail(node, "element type '" + type + "' built nothing");
+    if (!c) fail(node, "element type " + io::quote(type) + " built nothing");
     element.finish();
     add(name, std::shared_ptr<const kin::Constraint>(std::move(c)), node);
   }
@@ -376,7 +379,7 @@ class Reader {
       const YAML::Node joint = d.node("joint");
       const std::string jname = scalar(joint, doc_.file, "a prismatic joint name");
       const auto it = prismatics_.find(jname);
-      if (it == prismatics_.end()) fail(joint, "expected the name of a prismatic joint, found '" + jname + "'");
+      if (it == prismatics_.end()) fail(joint, "expected the name of a prismatic joint, found " + io::quote(jname));
       const auto& [slider, guide, axis] = it->second;
       c = std::make_shared<kin::DisplacementDriver>(slider, guide, axis, motion);
     }
@@ -434,7 +437,7 @@ class Reader {
         mech_.model.set_gravity(read_xy(*g, doc_.file, Quantity::acceleration, "m/s^2", "gravity"));
     }
     if (l.has("forces"))
-      for (const YAML::Node& f : l.sequence("forces")) {
+      for (const YAML::Node& f : l.sequence("forces", io::limits::kMechanismItems, "forces")) {
         MapReader r(f, doc_.file, "force");
         kin::PointForce pf;
         pf.at = point_ref(r.node("at"));
@@ -451,7 +454,7 @@ class Reader {
         mech_.model.add_force(pf);
       }
     if (l.has("torques"))
-      for (const YAML::Node& t : l.sequence("torques")) {
+      for (const YAML::Node& t : l.sequence("torques", io::limits::kMechanismItems, "torques")) {
         MapReader r(t, doc_.file, "torque");
         kin::BodyTorque bt;
         bt.body = link_ref(r.node("link"));
@@ -463,7 +466,7 @@ class Reader {
         mech_.model.add_torque(bt);
       }
     if (l.has("springs"))
-      for (const YAML::Node& s : l.sequence("springs")) {
+      for (const YAML::Node& s : l.sequence("springs", io::limits::kMechanismItems, "springs")) {
         MapReader r(s, doc_.file, "spring");
         kin::Spring sp;
         const std::vector<YAML::Node> between = r.sequence("between");
@@ -495,7 +498,7 @@ class Reader {
     kin::Output o;
     o.name = r.string("name");
     for (const kin::Output& other : mech_.outputs)
-      if (other.name == o.name) fail(r.node("name"), "duplicate output '" + o.name + "'");
+      if (other.name == o.name) fail(r.node("name"), "duplicate output " + io::quote(o.name));
     const std::string type = r.choice("type", {"x", "y", "angle", "slider", "speed", "acceleration"});
     if (type == "x" || type == "y") {
       o.kind = type == "x" ? kin::OutputKind::point_x : kin::OutputKind::point_y;
@@ -510,7 +513,7 @@ class Reader {
       o.kind = kin::OutputKind::slider_displacement;
       const YAML::Node joint = r.node("joint");
       const std::string jname = scalar(joint, doc_.file, "a prismatic joint name");
-      if (!prismatics_.count(jname)) fail(joint, "expected the name of a prismatic joint, found '" + jname + "'");
+      if (!prismatics_.count(jname)) fail(joint, "expected the name of a prismatic joint, found " + io::quote(jname));
       o.constraint = *mech_.model.constraint_index(jname);
     }
     r.finish();

@@ -6,19 +6,19 @@ namespace gearkit::mechanism {
 
 int resolve_link(const kin::Model& model, const std::string& name, const io::SourceMark& mark) {
   const auto body = model.body_index(name);
-  if (!body) io::fail_at(mark, "unknown link '" + name + "'");
+  if (!body) io::fail_at(mark, "unknown link " + io::quote(name));
   return *body;
 }
 
 kin::BodyPoint resolve_point(const kin::Model& model, const std::string& text, const io::SourceMark& mark) {
   const auto dot = text.find('.');
-  if (dot == std::string::npos) io::fail_at(mark, "expected a point reference 'link.point', found '" + text + "'");
+  if (dot == std::string::npos) io::fail_at(mark, "expected a point reference 'link.point', found " + io::quote(text));
   const std::string link = text.substr(0, dot), point = text.substr(dot + 1);
   const auto body = model.body_index(link);
-  if (!body) io::fail_at(mark, "unknown link '" + link + "' in '" + text + "'");
+  if (!body) io::fail_at(mark, "unknown link " + io::quote(link) + " in " + io::quote(text));
   const kin::Body& b = *body == kin::kGround ? model.ground() : model.bodies()[static_cast<std::size_t>(*body)];
   const auto local = b.point(point);
-  if (!local) io::fail_at(mark, "link '" + link + "' has no point '" + point + "'");
+  if (!local) io::fail_at(mark, "link " + io::quote(link) + " has no point " + io::quote(point));
   return {*body, *local};
 }
 

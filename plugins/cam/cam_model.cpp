@@ -1,6 +1,7 @@
 #include "cam_model.hpp"
 
 #include <gearkit/io/error.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
@@ -52,7 +53,7 @@ struct LiftUnit {
 void read_table(io::MapReader& r, const LiftUnit& lift, gc::Segment& seg) {
   seg.table_ends = table_ends(r.choice("ends", {"zero_slope", "natural", "periodic"}, std::string("zero_slope")));
   seg.interpolation = interpolation(r.choice("interpolation", {"pchip", "cubic", "bspline"}, std::string("pchip")));
-  for (const YAML::Node& point : r.sequence("points")) {
+  for (const YAML::Node& point : r.sequence("points", io::limits::kCamTablePoints, "points")) {
     if (!point.IsSequence() || point.size() != 2)
       io::fail_at(io::mark_of(point, r.file()), "expected a point [angle, value], e.g. [130 deg, 1.65 deg]");
     gc::TablePoint p;
@@ -244,8 +245,15 @@ std::vector<gc::Segment> read_motion_segments(io::MapReader& r, bool angular_lif
                                               std::vector<io::SourceMark>* marks) {
   std::vector<gc::Segment> segments;
   double level = 0;
-  for (const YAML::Node& item : r.sequence("motion")) {
+  std::size_t table_points = 0;
+  for (const YAML::Node& item : r.sequence("motion", io::limits::kCamSegments, "segments")) {
     gc::Segment seg = read_segment(item, r.file(), angular_lift, metres_to_model);
+    table_points += seg.table.size();
+    if (table_points > io::limits::kCamTablePoints)
+      io::fail_at(io::mark_of(item["points"], r.file()),
+                  fmt::format("expected at most {} table points in the motion program (all tables together), found "
+                              "{} up to this table (docs/cli.md, Limits)",
+                              io::limits::kCamTablePoints, table_points));
     if (seg.kind == gc::SegmentKind::fall && std::isnan(seg.lift)) seg.lift = level;
     if (seg.kind == gc::SegmentKind::rise) level += seg.lift;
     if (seg.kind == gc::SegmentKind::fall) level -= seg.lift;

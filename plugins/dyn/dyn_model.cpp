@@ -3,6 +3,7 @@
 #include "dyn_mechanism.hpp"
 
 #include <gearkit/io/quantity.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
@@ -126,7 +127,7 @@ constexpr double kLargestOverallRatio = 1e6;
 void read_stages(io::MapReader& root, Model& m) {
   if (!root.has("stages")) return;
   double overall = 1;
-  for (const YAML::Node& item : root.sequence("stages")) {
+  for (const YAML::Node& item : root.sequence("stages", io::limits::kDynListItems, "stages")) {
     io::MapReader r(item, root.file(), "stage");
     gd::Stage s;
     s.name = r.has("name") ? r.string("name") : fmt::format("stage {}", m.line.stages.size() + 1);
@@ -204,7 +205,7 @@ void read_load(io::MapReader& root, Model& m, const mechanism::ElementTypeLookup
   if (r.has("inertia_table")) {
     m.load.inertia_table_mark = r.mark("inertia_table");
     std::vector<double> angle, inertia;
-    for (const YAML::Node& row : r.sequence("inertia_table")) {
+    for (const YAML::Node& row : r.sequence("inertia_table", io::limits::kDynTableRows, "rows")) {
       if (!row.IsSequence() || row.size() != 2)
         io::fail_at(io::mark_of(row, r.file()), "inertia_table: expected a row [angle, inertia]");
       angle.push_back(io::scalar_quantity(row[0], r.file(), io::Quantity::angle, "deg"));
@@ -248,7 +249,7 @@ void read_energy(io::MapReader& root, Model& m) {
   if (q.cycle.has_value() == q.cycle_time.has_value())
     io::fail_at(r.mark(), "energy: expected exactly one of 'cycle' (angle of the load shaft) or 'cycle_time'");
   q.report_time = optional_positive(r, "report_time", io::Quantity::time, "s");
-  for (const YAML::Node& item : r.sequence("loads")) {
+  for (const YAML::Node& item : r.sequence("loads", io::limits::kDynListItems, "loads")) {
     io::MapReader l(item, root.file(), "energy load");
     EnergyLoad load;
     load.mark = l.mark();
@@ -269,7 +270,7 @@ void read_energy(io::MapReader& root, Model& m) {
     q.loads.push_back(std::move(load));
   }
   if (r.has("phases")) {
-    for (const YAML::Node& item : r.sequence("phases")) {
+    for (const YAML::Node& item : r.sequence("phases", io::limits::kDynListItems, "phases")) {
       io::MapReader p(item, root.file(), "phase");
       EnergyPhase phase;
       phase.mark = p.mark();
@@ -324,7 +325,7 @@ void read_reduced_force(io::MapReader& root, Model& m) {
   q.point = r.has("point") ? r.string("point") : std::string("A");
   q.point_velocity = vector(r, "point_velocity", io::Quantity::velocity, "m/s");
   if (r.has("shaft_speed")) q.shaft_speed = r.quantity("shaft_speed", io::Quantity::angular_velocity, "rad/s");
-  for (const YAML::Node& item : r.sequence("terms")) {
+  for (const YAML::Node& item : r.sequence("terms", io::limits::kDynListItems, "terms")) {
     io::MapReader t(item, root.file(), "reduced-force term");
     ReducedForceTerm term;
     term.mark = t.mark();

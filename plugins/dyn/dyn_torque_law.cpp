@@ -1,6 +1,7 @@
 #include "dyn_torque_law.hpp"
 
 #include <gearkit/io/quantity.hpp>
+#include <gearkit/io/limits.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
@@ -46,7 +47,7 @@ TorqueLaw read_law(const YAML::Node& node, const std::string& file, const std::s
       io::fail_at(r.mark("power"), fmt::format("{}: 'power': expected a positive value, found {:g} W", what, law.value));
   } else if (r.has("table")) {
     law.kind = TorqueLaw::Kind::table;
-    for (const YAML::Node& row : r.sequence("table")) {
+    for (const YAML::Node& row : r.sequence("table", io::limits::kDynTableRows, "rows")) {
       const io::SourceMark m = io::mark_of(row, file);
       if (!row.IsSequence() || row.size() != 2)
         io::fail_at(m, fmt::format("{}: expected a row [angle, torque], found {}", what,

@@ -93,10 +93,7 @@ double read_life(MapReader& load, double default_h) {
 
 void read_spectrum(MapReader& load, gg::RatingInput& r) {
   if (!load.has("spectrum")) return;
-  const auto rows = load.sequence("spectrum");
-  if (rows.size() > kMaxSpectrumRows) {
-    io::fail_at(load.mark("spectrum"), fmt::format("expected at most {} spectrum rows, found {}", kMaxSpectrumRows, rows.size()));
-  }
+  const auto rows = load.sequence("spectrum", kMaxSpectrumRows, "rows");
   double share_sum = 0.0;
   bool shares = false;
   for (std::size_t k = 0; k < rows.size(); ++k) {

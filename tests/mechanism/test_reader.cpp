@@ -85,6 +85,20 @@ TEST(MechanismYaml, ReadsUnitsAndStructure) {
   EXPECT_NEAR(data.q(6), 0.050 * std::cos(M_PI / 6) + std::sqrt(0.2 * 0.2 - std::pow(0.05 * std::sin(M_PI / 6), 2)), 1e-12);
 }
 
+// docs/cli.md: a value in a message is quoted with at most 60 characters of it (issue 26,
+// section 3: a 400-character link name was quoted whole).
+TEST(MechanismYaml, NamesInMessagesAreCutAtSixtyCharacters) {
+  const std::string name(400, 'q');
+  const std::string shown = "'" + std::string(60, 'q') + "...'";
+  const std::string unknown = error_of(with(kSliderCrank, "[rod.B, piston.B]", "[rod.B, " + name + ".B]"));
+  EXPECT_NE(unknown.find("unknown link " + shown + " in '" + std::string(60, 'q') + "...'"), std::string::npos) << unknown;
+  const std::string point = error_of(with(kSliderCrank, "[crank.A, rod.A]", "[crank." + name + ", rod.A]"));
+  EXPECT_NE(point.find("link 'crank' has no point " + shown), std::string::npos) << point;
+  const std::string duplicate = error_of(with(with(kSliderCrank, "  piston:\n", "  " + name + ":\n"), "  rod:\n", "  " + name + ":\n"));
+  EXPECT_NE(duplicate.find("duplicate link " + shown), std::string::npos) << duplicate;
+  EXPECT_LT(duplicate.size(), 120u) << duplicate;
+}
+
 TEST(MechanismYaml, ErrorsNameFileLineAndColumn) {
   EXPECT_EQ(error_of(with(kSliderCrank, "[rod.B, piston.B]", "[rod.B, pistn.B]")).rfind("m.yaml:18:", 0), 0u)
       << error_of(with(kSliderCrank, "[rod.B, piston.B]", "[rod.B, pistn.B]"));

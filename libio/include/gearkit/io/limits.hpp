@@ -14,6 +14,10 @@ inline constexpr double kSweepPositions = 1e7;
 /// kin: positions of a sweep times the mechanism's coordinates (3 per body): the work grows
 /// with both (about 0.2 us per coordinate and position).
 inline constexpr double kSweepWork = 1e8;
+/// kin --format html: positions of a sweep on the page. A page is a report to read and print
+/// (about 4 kB per four-bar position with its JSON): a longer sweep shows one position in k,
+/// stated on the page, and --format csv/json hold every position.
+inline constexpr long kHtmlTableRows = 2000;
 /// kin --at: the solver reaches the asked input by continuation from the drawn configuration
 /// in steps of 2 deg or 2 mm: at most this many steps (200,000 deg, 200 m) ...
 inline constexpr double kContinuationSteps = 100'000;
@@ -39,6 +43,25 @@ inline constexpr long long kDrawnTeeth = 4000;
 inline constexpr std::size_t kTrainMeshes = 2000;
 inline constexpr std::size_t kTrainMembers = 4000;
 inline constexpr std::size_t kTrainGears = 8000;
+
+/// Lists of a model file. Every list is bounded by the YAML node limit (1,000,000 nodes, about
+/// 500 MB of yaml-cpp nodes: docs/cli.md); these are the lists whose work grows faster than their
+/// length or whose items are costly, each refused at its first item beyond the limit.
+/// kin: links of a mechanism (3 coordinates each), and the items of every other list of it
+/// (joints, ground points, elements, drivers, outputs, forces, torques, springs): a chain of
+/// 10,000 four-bar loops (`kin --example chain:10000`, 20,001 links, 30,001 joints) is the largest.
+inline constexpr std::size_t kMechanismLinks = 20'001;
+inline constexpr std::size_t kMechanismItems = 30'001;
+/// cam: points of the `table` segments of a motion program, all tables together (each cam angle
+/// of the report finds its interval in a table: 30,000 points took 3 s, 100,000 over a minute).
+inline constexpr std::size_t kCamTablePoints = 10'000;
+/// cam: segments of a motion program.
+inline constexpr std::size_t kCamSegments = 1'000;
+/// dyn: rows of a table over the turn (`inertia_table`, a torque law's `table`): as many as a
+/// computed inertia table has at the most `mechanism_steps` (36,000 intervals).
+inline constexpr std::size_t kDynTableRows = 36'001;
+/// dyn: stages, energy loads, phases and reduced-force terms, each list.
+inline constexpr std::size_t kDynListItems = 1'000;
 
 /// train --modes: members that are not planets, input or output (each is held in turn and each
 /// pair coupled: 820 modes at the limit).

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gearkit::io {
@@ -21,8 +22,9 @@ struct YamlDocument {
 
 /// Loads a YAML file for a model.
 /// @throws InputError when the path is missing, a directory or unreadable; the file is empty,
-///         binary (NUL bytes or invalid UTF-8), larger than `max_bytes`, nested deeper than
-///         yaml-cpp's guard, or malformed YAML (with the parser's line and column).
+///         binary (NUL bytes or invalid UTF-8), larger than `max_bytes`, nested deeper or
+///         holding more nodes than the limits of docs/cli.md, or malformed YAML (with the
+///         parser's line and column).
 YamlDocument load_yaml_file(const std::string& path, std::uintmax_t max_bytes = 64u << 20);
 
 /// Parses YAML text (an embedded model) as if it came from `name`. Same errors as above.
@@ -73,6 +75,9 @@ class MapReader {
   MapReader map(const std::string& key);
   /// A sequence's items. @throws InputError if missing or not a sequence.
   std::vector<YAML::Node> sequence(const std::string& key);
+  /// A sequence of at most `at_most` items, `items` naming them for the message ("points").
+  /// @throws InputError as above, or at the first item beyond the limit (docs/cli.md, Limits).
+  std::vector<YAML::Node> sequence(const std::string& key, std::size_t at_most, std::string_view items);
 
   /// Rejects keys no accessor asked for: "file:l:c: unknown key 'x' in gear; expected one of: ...".
   void finish() const;
@@ -86,6 +91,11 @@ class MapReader {
   std::string what_;
   mutable std::set<std::string> known_;
 };
+
+/// Refuses a list or mapping of more than `at_most` items, at the first one beyond the limit:
+/// "expected at most N `items` in `what`, found M". Anything else passes.
+void check_size(const YAML::Node& node, const std::string& file, std::size_t at_most, std::string_view items,
+                std::string_view what);
 
 /// Reads a scalar as a quantity, reporting errors at the node.
 double scalar_quantity(const YAML::Node& node, const std::string& file, Quantity q,
