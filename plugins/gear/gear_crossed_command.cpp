@@ -128,8 +128,7 @@ void forces_table(io::Report& report, const gg::CrossedHelicalInput& in, const g
     report.warnings.push_back(fmt::format("no forces: gear {} cannot drive (self-locking)", driver));
     return;
   }
-  io::Table t{"Forces (frame: x along gear 1's axis, z from gear 1's axis to gear 2's, g2 = (cos Sigma, -sin Sigma, 0))",
-              {"quantity", "gear 1", "gear 2"}, {}};
+  io::Table t{"Forces", {"quantity", "gear 1", "gear 2"}, {}};
   auto row = [&t](std::string name, std::string a, std::string b) { t.add_row({std::move(name), std::move(a), std::move(b)}); };
   row("driver", driver == 1 ? "yes" : "", driver == 2 ? "yes" : "");
   row("torque T [N m]", num(f.T1, 3), num(f.T2, 3));
@@ -174,7 +173,8 @@ int run_gear_crossed_command(plugin::CommandContext& context) {
   report.warnings = c.warnings;
   if (T1 || T2) forces_table(report, in, c, T1 ? *T1 : *T2, T1 ? 1 : 2, driver);
   if (!in.mu) report.notes.push_back("friction coefficient 0.05 assumed (steel on steel, lubricated); give --friction");
-  report.notes.push_back("Unshifted gears; frames, hands and senses: docs/gear-types.md.");
+  report.notes.push_back("Unshifted gears. Forces: x along gear 1's axis, z from gear 1's axis to gear 2's, gear 2's axis "
+                         "g2 = (cos Sigma, -sin Sigma, 0); hands and senses: docs/gear-types.md.");
   return io::emit(report, common, context.out);
 }
 

@@ -166,7 +166,7 @@ void rack_and_mesh_tables(io::Report& report, const gg::RackPinionInput& in, con
 void forces_table(io::Report& report, const gg::RackPinionInput& in, const gg::RackPinionResult& r, double T, double n1) {
   const double signed_T = n1 < 0.0 ? -T : T;
   const gg::RackForces f = gg::rack_forces(signed_T, r.d, r.alpha_t, in.beta);
-  io::Table t{"Forces (frame: pinion axis +z, rack below along x, pitch point (0, -d/2, 0))", {"quantity", "value"}, {}};
+  io::Table t{"Forces", {"quantity", "value"}, {}};
   t.add_row({"torque on the pinion T1 [N m]", num(signed_T, 3)});
   t.add_row({"tangential F_t / radial F_r / axial F_a [N]", fmt::format("{} / {} / {}", num(f.F_t, 1), num(f.F_r, 1), num(f.F_a, 1))});
   t.add_row({"force on the rack (x, y, z) [N]", vec_text(f.on_rack)});
@@ -174,6 +174,8 @@ void forces_table(io::Report& report, const gg::RackPinionInput& in, const gg::R
   const double v = std::numbers::pi * r.d * n1 / 60000.0;
   if (n1 != 0.0) t.add_row({"rack velocity along x [m/s], power [W]", fmt::format("{} , {}", num(v, 4), num(f.on_rack[0] * v, 1))});
   report.tables.push_back(std::move(t));
+  report.notes.push_back("Forces: pinion axis +z, the rack below it along x, pitch point (0, -d/2, 0); the torque in the sense of --speed1 "
+                         "(docs/gear-types.md).");
   report.json["forces"] = {{"T1_Nm", jnum(signed_T)}, {"F_t_N", jnum(f.F_t)}, {"F_r_N", jnum(f.F_r)}, {"F_a_N", jnum(f.F_a)},
                            {"F_rack_N", jvec(f.on_rack)}, {"F_pinion_N", jvec(f.on_pinion)}, {"v_rack_m_s", jnum(v)},
                            {"P_W", jnum(f.on_rack[0] * v)}};

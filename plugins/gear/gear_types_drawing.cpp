@@ -240,7 +240,8 @@ io::Drawing rack_drawing(const gg::RackPinionInput& in, const gg::RackPinionResu
   const double sa = std::sin(r.alpha_t), ca = std::cos(r.alpha_t);
   const double Tx = r1 * sa * ca, Ty = -r1 * ca * ca;  // tangent point on the base circle
   d.lines.push_back({"line_of_action", Tx, Ty, -Tx, -2.0 * r1 - Ty});
-  io::add_label(d, -Tx, -2.0 * r1 - Ty, -Tx - 3.0 * h, -2.0 * r1 - Ty - 2.0 * h, fmt::format("line of action, α_t = {}", deg(r.alpha_t)), h, "labels");
+  // Its label left of the rack, clear of the teeth.
+  io::add_label(d, -Tx, -2.0 * r1 - Ty, x0 - ext - h, y0 - 1.5 * h, fmt::format("line of action, α_t = {}", deg(r.alpha_t)), h, "labels");
   const io::Box box = io::drawing_box(d);
   const double x = box.xmax + 4.0 * h;
   const io::Size block = io::add_table(d, rack_data(in, r), x, box.ymax, h, "data_block", "frame");

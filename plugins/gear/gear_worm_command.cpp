@@ -152,7 +152,7 @@ void forces_table(io::Report& report, const gg::WormResult& w, double T, bool on
     report.warnings.push_back("no forces for the wheel driving: the mesh is self-locking running (eta_21 <= 0), the wheel cannot turn the worm");
     return;
   }
-  io::Table t{"Forces (frame: wheel axis +y through the origin, worm axis along +x through (0, 0, a))", {"quantity", "worm", "wheel"}, {}};
+  io::Table t{"Forces", {"quantity", "worm", "wheel"}, {}};
   auto row = [&t](std::string name, std::string a, std::string b) { t.add_row({std::move(name), std::move(a), std::move(b)}); };
   row("driver", worm_drives ? "yes" : "", worm_drives ? "" : "yes");
   row("torque T [N m]", num(f.T1, 3), num(f.T2, 3));
@@ -197,8 +197,8 @@ int run_gear_worm_command(plugin::CommandContext& context) {
   pair_table(report, in, w);
   report.warnings = w.warnings;
   if (T1 || T2) forces_table(report, w, T1 ? *T1 : *T2, T1.has_value(), worm_drives);
-  report.notes.push_back("Efficiency and forces at the pitch point on the worm's working cylinder d_w1 = 2 a - d2; frames, hands and "
-                         "senses: docs/gear-types.md.");
+  report.notes.push_back("Efficiency and forces at the pitch point on the worm's working cylinder d_w1 = 2 a - d2. Forces: wheel axis +y "
+                         "through the origin, worm axis along +x through (0, 0, a); hands and senses: docs/gear-types.md.");
   io::OutputSet outputs(context.out);  // every file committed together, after the report renders
   if (vm.count("svg") || vm.count("dxf")) {
     const io::Drawing drawing = worm_drawing(in, w, 1e-3);

@@ -96,7 +96,7 @@ TEST(GearTypesCommand, EveryFormatRenders) {
   for (const char* cmd : {"rack --z1 20 --module 2 --torque1 10N*m", "worm --z1 2 --z2 30 --module 3 --q 12 --torque1 10N*m --speed1 1000rpm",
                           "crossed --z1 15 --z2 24 --module 3 --helix-angle1 45 --helix-angle2 45 --torque1 10N*m --speed1 1000rpm"})
     for (const char* format : {"text", "json", "csv", "md", "html"}) {
-      const auto r = run_gearkit(std::string("gear ") + cmd + " --format " + format);
+      const auto r = run_gearkit(std::string("gear ") + cmd + " --format " + format + (std::string(format) == "csv" ? " --table all" : ""));
       EXPECT_EQ(r.status, 0) << cmd << " " << format << ": " << r.err;
       EXPECT_FALSE(r.out.empty());
     }
