@@ -293,8 +293,9 @@ std::vector<YAML::Node> MapReader::sequence(const std::string& key) {
 }
 
 std::vector<YAML::Node> MapReader::sequence(const std::string& key, std::size_t at_most, std::string_view items) {
-  check_size(get(key), file_, at_most, items, fmt::format("'{}' of {}", key, what_));
-  return sequence(key);
+  const YAML::Node n = get(key);
+  if (n.IsSequence()) check_size(n, file_, at_most, items, fmt::format("'{}' of {}", key, what_));
+  return sequence(key);  // (refuses anything but a list)
 }
 
 void MapReader::finish() const {

@@ -36,7 +36,7 @@ gd::SteadyCycle steady_cycle(const Model& m, const EnergyQuestion& q, double& ri
   }
   for (const EnergyPhase& p : q.phases) {
     if (p.to > cycle.cycle_angle * (1 + 1e-9))
-      io::fail_at(p.mark, fmt::format("phase '{}' ends at {:g} deg, after the cycle's {:g} deg", p.name,
+      io::fail_at(p.mark, fmt::format("phase {} ends at {:g} deg, after the cycle's {:g} deg", io::quote(p.name),
                                       p.to * 180 / std::numbers::pi, cycle.cycle_angle * 180 / std::numbers::pi));
     cycle.phases.push_back({p.name, p.from, std::min(p.to, cycle.cycle_angle)});
   }

@@ -254,7 +254,7 @@ void read_energy(io::MapReader& root, Model& m) {
     EnergyLoad load;
     load.mark = l.mark();
     load.name = l.string("name");
-    load.torque = optional_law(l, "torque", "torque of '" + load.name + "'");
+    load.torque = optional_law(l, "torque", "torque of " + io::quote(load.name));
     load.force = non_negative(l, "force", io::Quantity::force, "N");
     load.energy = non_negative(l, "energy", io::Quantity::energy, "J");
     load.mass_to_speed = non_negative(l, "mass_to_speed", io::Quantity::mass, "kg");
@@ -278,7 +278,7 @@ void read_energy(io::MapReader& root, Model& m) {
       phase.from = p.quantity("from", io::Quantity::angle, "deg");
       phase.to = p.quantity("to", io::Quantity::angle, "deg");
       if (!(phase.to > phase.from))
-        io::fail_at(p.mark("to"), fmt::format("phase '{}': 'to' must be after 'from'", phase.name));
+        io::fail_at(p.mark("to"), fmt::format("phase {}: 'to' must be after 'from'", io::quote(phase.name)));
       p.finish();
       q.phases.push_back(phase);
     }
@@ -338,7 +338,7 @@ void read_reduced_force(io::MapReader& root, Model& m) {
       term.gravity = t.quantity_or("gravity", io::Quantity::acceleration, "m/s^2", gd::standard_gravity);
     }
     if (!t.has("force") && !t.has("mass"))
-      io::fail_at(t.mark(), fmt::format("term '{}': expected a 'force', a 'mass' or both", term.name));
+      io::fail_at(t.mark(), fmt::format("term {}: expected a 'force', a 'mass' or both", io::quote(term.name)));
     t.finish();
     q.terms.push_back(term);
   }

@@ -60,7 +60,7 @@ ParsedInput parse_input(const gt::TrainModel& model, const std::string& text, co
       input.speed_rad_s = typed_option ? io::parse_option_quantity_si(speed, io::Quantity::angular_velocity, "")
                                        : io::parse_quantity_si(speed, io::Quantity::angular_velocity, "rpm");
     } catch (const io::QuantityError& e) {
-      fail(fmt::format("input speed of '{}': {}", model.member(m).name, e.what()));
+      fail(fmt::format("input speed of {}: {}", io::quote(model.member(m).name), e.what()));
     }
     input.condition.label = "input " + model.member(m).name + " = " + trim(text.substr(eq + 1));
   }

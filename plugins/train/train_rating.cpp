@@ -148,7 +148,7 @@ gg::GearPairInput pair_of(const gt::TrainModel& model, const RatingData& d, cons
   const gt::Gear& g1 = model.gear(p.pinion);
   const gt::Gear& g2 = model.gear(p.wheel);
   for (const gt::Gear* g : {&g1, &g2}) {
-    if (!g->module_mm) io::fail_at(gear_data(d, *g).mark, fmt::format("gear '{}': the rating needs its module", g->name));
+    if (!g->module_mm) io::fail_at(gear_data(d, *g).mark, fmt::format("gear {}: the rating needs its module", io::quote(g->name)));
   }
   gg::GearPairInput in;
   in.z1 = g1.z;
@@ -163,7 +163,7 @@ gg::GearPairInput pair_of(const gt::TrainModel& model, const RatingData& d, cons
   for (int i = 0; i < 2; ++i) {
     const gt::Gear& g = i == 0 ? g1 : g2;
     w[i] = std::isnan(gear_data(d, g).face_width_mm) ? d.face_width_mm : gear_data(d, g).face_width_mm;
-    if (std::isnan(w[i])) io::fail_at(gear_data(d, g).mark, fmt::format("gear '{}': the rating needs its face_width", g.name));
+    if (std::isnan(w[i])) io::fail_at(gear_data(d, g).mark, fmt::format("gear {}: the rating needs its face_width", io::quote(g.name)));
   }
   // Faces centred on each other: the mesh carries the narrower width; the wider gear's root
   // carries at most one module more on each side (ISO 6336-3; GearPairInput::face_widths).
@@ -176,7 +176,7 @@ gg::Material material_of(const RatingData& d, const gt::Gear& g) {
   const GearData& gd = gear_data(d, g);
   if (gd.material) return *gd.material;
   if (d.material) return *d.material;
-  io::fail_at(gd.mark, fmt::format("gear '{}': the rating needs its material (or rating: material:)", g.name));
+  io::fail_at(gd.mark, fmt::format("gear {}: the rating needs its material (or rating: material:)", io::quote(g.name)));
 }
 
 int meshes_of(const gt::TrainModel& model, gt::GearId g) {
@@ -310,10 +310,10 @@ std::optional<MeshRating> rate_mesh(const gt::TrainModel& model, const RatingDat
     m.allowances_from = root_allowances(mesh.name, pair, table, tools, in, warnings);
     m.rating = gg::rate_gear_pair(pair, table, in);
   } catch (const gg::GeometryError& e) {
-    io::fail_at(gear_data(d, g1).mark, fmt::format("mesh '{}': {}", mesh.name, e.what()));
+    io::fail_at(gear_data(d, g1).mark, fmt::format("mesh {}: {}", io::quote(mesh.name), e.what()));
   } catch (const gg::RatingError& e) {
     const auto it = mesh_marks.find(e.field());
-    io::fail_at(it != mesh_marks.end() ? it->second : mark_for_field(d, e.field()), fmt::format("mesh '{}': {}", mesh.name, e.what()));
+    io::fail_at(it != mesh_marks.end() ? it->second : mark_for_field(d, e.field()), fmt::format("mesh {}: {}", io::quote(mesh.name), e.what()));
   }
   return m;
 }
