@@ -56,10 +56,11 @@ io::Plot dynamics_plot(const CamModel& model, const CamDynamics& dyn) {
     torque.push_back(s.torque);
     stress.push_back(s.hertz_stress / 1e6);
   }
-  io::PlotPanel f{"force on the follower [N]", {closed_series("contact force F_n (normal), rigid follower", theta, force, "#1f4e9c")}, {}};
+  io::PlotPanel f{osc ? "contact force F_n [N]" : "force [N], F_c = F_n cos phi",
+                  {closed_series("contact force F_n", theta, force, "#1f4e9c")}, {}};
   // Q: the axial force F_c = F_n cos phi of a translating follower (same panel, N); the arm's
   // torque of an oscillating one (a panel of its own, N*m).
-  if (!osc) f.series.push_back(closed_series("axial force F_c = F_n cos phi", theta, axial, "#6a3d9a"));
+  if (!osc) f.series.push_back(closed_series("axial force F_c", theta, axial, "#6a3d9a"));
   if (dyn.flexible) {
     std::vector<double> flex;
     for (std::size_t i = 0; i < dyn.flexible->theta.size(); ++i)

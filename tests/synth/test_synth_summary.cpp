@@ -54,10 +54,11 @@ TEST(SynthSummary, CrankRockerOverTheFullTurnIsTheClosedForm) {
   const auto& s = j["summary"];
   EXPECT_EQ(s["motion"], "full turn");
   const MuRange mu = closed_form_mu(j["linkage"]);
-  // 0.1 deg samples: near an extreme mu is quadratic in theta2, so sampling misses it by far less
-  // than 1e-3 deg.
+  // 0.1 deg samples: near a smooth extreme mu is quadratic in theta2, so sampling misses it by far
+  // less than 1e-3 deg; where the acute angle folds at 90 deg it has a corner, missed by up to the
+  // step times the slope (below 0.1 deg).
   EXPECT_NEAR(s["transmission_angle_min_deg"].get<double>(), mu.min, 1e-3);
-  EXPECT_NEAR(s["transmission_angle_max_deg"].get<double>(), mu.max, 1e-3);
+  EXPECT_NEAR(s["transmission_angle_max_deg"].get<double>(), mu.max, mu.max == 90 ? 0.1 : 1e-3);
   const auto& l = j["linkage"];
   const double a = l["crank_mm"], b = l["coupler_mm"], c = l["rocker_mm"], d = l["ground_mm"];
   const double extended = std::acos((d * d + c * c - (b + a) * (b + a)) / (2 * d * c));
@@ -87,7 +88,7 @@ TEST(SynthSummary, EveryTaskSummarisesTheMotionReallyMade) {
       EXPECT_EQ(s["motion"], "full turn") << task;
       const MuRange mu = closed_form_mu(j["linkage"]);
       EXPECT_NEAR(s["transmission_angle_min_deg"].get<double>(), mu.min, 1e-3) << task;
-      EXPECT_NEAR(s["transmission_angle_max_deg"].get<double>(), mu.max, 1e-3) << task;
+      EXPECT_NEAR(s["transmission_angle_max_deg"].get<double>(), mu.max, mu.max == 90 ? 0.1 : 1e-3) << task;
     } else {
       EXPECT_EQ(s["motion"], "travel") << task;
     }
