@@ -267,7 +267,11 @@ def execute(exe, argv, scratch, stdout_to, timeout, memory_mb, env, streams=None
         proc = subprocess.Popen([exe] + argv, stdin=stdin, stdout=stdout, stderr=stderr, cwd=scratch,
                                 env=env, preexec_fn=limits(memory_mb, close))
         status, rss = None, 0
+        name, _, delay = (streams or {}).get("signal", "::").partition(":")
         while True:
+            if name and time.monotonic() - start > float(delay):
+                os.killpg(proc.pid, getattr(signal, "SIG" + name))
+                name = ""
             pid, raw, usage = os.wait4(proc.pid, os.WNOHANG)
             if pid:
                 status = os.waitstatus_to_exitcode(raw)
@@ -404,8 +408,10 @@ def classify(case, result, input_before, input_after, options, output=None):
         return "timeout", f"{seconds:.1f} s"
     if status in SANITIZER_STATUS or any("Sanitizer" in l or "runtime error:" in l for l in lines):
         return "sanitizer", next((l for l in lines if "Sanitizer" in l or "runtime error" in l), "")[:160]
-    if status == -signal.SIGPIPE and streams.get("stdout") == "broken pipe":  # the reader went away
-        return ("output", output) if output else ("ok0", "SIGPIPE")
+    sent = streams.get("signal", ":").split(":")[0]
+    if status == -signal.SIGPIPE and streams.get("stdout") == "broken pipe" or sent and status in (
+            -getattr(signal, "SIG" + sent), 128 + getattr(signal, "SIG" + sent)):  # a reader gone, a signal sent
+        return ("output", output) if output else ("ok0", f"signal {-status}")
     if status < 0:
         return "crash", f"signal {-status}"
     if status == 1 and any("out of memory" in l for l in lines) or rss > options.max_rss_mb:
@@ -489,6 +495,7 @@ def parse_arguments():
     p.add_argument("--show", type=int, default=20, help="failing cases listed")
     p.add_argument("--reasons", type=int, default=0, help="list the N commonest reasons for status 2")
     p.add_argument("--replay", default=None, help="prepare one saved case in a kept folder and run it")
+    p.add_argument("--strategies", default=None, help="only these strategies (comma-separated): " + ",".join(STRATEGIES))
     o = p.parse_args()
     o.exe = os.path.abspath(o.exe)
     o.env = dict(os.environ, LC_ALL="C")
@@ -525,6 +532,9 @@ def main():
     if o.replay:
         return replay(o)
     rng = random.Random(o.seed)
+    for name in list(STRATEGIES) if o.strategies else []:
+        if name not in o.strategies.split(","):
+            del STRATEGIES[name]
     help_table = read_help(o.exe, o.env)
     cases = load_corpus(o.corpus) + [generate_case(rng, help_table) for _ in range(o.cases)]
     own_work = o.work is None

@@ -53,13 +53,14 @@ def cut_short(path):
 
 
 def problem(scratch, before, status):
-    """A description of a half-written output, or None."""
+    """A description of a half-written output, or None. After a signal (status < 0 or 128 + N) only
+    what an atomic write excludes counts: a temporary left, a file cut short."""
     after = listing(scratch)
     temporaries = sorted(p for p in after if "gearkit-tmp" in p)
     if temporaries:
         return f"temporary file left: {temporaries[0]}"
     changed = sorted(p for p in after if before.get(p) != after[p])
-    if status not in (0, 3) and status is not None and status != -13:
+    if status in (2, 1) or status is not None and status > 3 and status < 128:
         if changed:
             return f"exit {status} {'changed' if changed[0] in before else 'wrote'} {changed[0]}"
         return None

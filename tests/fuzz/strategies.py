@@ -8,8 +8,9 @@
             deleted, merged with '<<', made to contain themselves
   encoding  the file in UTF-16/UTF-32 (with and without BOM), UTF-8 with BOM, Latin-1, with invalid
             UTF-8 sequences, NUL bytes, CR or CRLF line ends
-  env       odd environments (TMPDIR, GEARKIT_PLUGIN_PATH, HOME, locale) and standard streams
-            (closed stdin/stdout/stderr, stdout on /dev/full or on a pipe nobody reads)
+  env       odd environments (TMPDIR, GEARKIT_PLUGIN_PATH, HOME, locale), standard streams
+            (closed stdin/stdout/stderr, stdout on /dev/full or on a pipe nobody reads) and signals
+            (SIGINT, SIGTERM, SIGHUP, SIGPIPE after a delay)
   cross     one command's model file fed to another command
 """
 import copy
@@ -289,7 +290,9 @@ ENV_CHOICES = {
 }
 STREAMS = {"stdin": ["closed", "closed", "tty-less pipe", "directory"],
            "stdout": ["closed", "closed", "closed", "full", "broken pipe", "null"],
-           "stderr": ["closed", "full"]}
+           "stderr": ["closed", "full"],
+           # a signal to the process group after a delay (fuzz.execute): no temporary may stay
+           "signal": ["INT:0.02", "TERM:0.05", "HUP:0.1", "TERM:0.2", "PIPE:0.05", "INT:0.005"]}
 
 
 def random_environment(rng):
@@ -299,7 +302,7 @@ def random_environment(rng):
         name = rng.choice(sorted(ENV_CHOICES))
         env[name] = rng.choice(ENV_CHOICES[name])
     for _ in range(rng.choice([0, 1, 1, 1, 2])):
-        name = rng.choice(["stdin", "stdout", "stdout", "stdout", "stderr"])
+        name = rng.choice(["stdin", "stdout", "stdout", "stdout", "stderr", "signal", "signal"])
         streams[name] = rng.choice(STREAMS[name])
     if not env and not streams:
         streams["stdout"] = "closed"
