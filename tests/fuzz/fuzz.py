@@ -476,8 +476,13 @@ def save_failure(folder, index, case, outcome, detail):
     os.makedirs(folder, exist_ok=True)
     d = case.to_json()
     d["note"] = f"{outcome}: {detail}"
+    text = json.dumps(d, indent=1, ensure_ascii=False)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:  # the lone surrogates of an invalid-UTF-8 case: written as \udcXX
+        text = json.dumps(d, indent=1)
     with open(os.path.join(folder, f"{outcome}-{index:06d}.json"), "w", encoding="utf-8") as f:
-        json.dump(d, f, indent=1, ensure_ascii=False)
+        f.write(text)
 
 
 def parse_arguments():

@@ -72,8 +72,8 @@ def problem(scratch, before, status):
 
 
 # An error that says where: file:line:column, a named option or argument, the command word.
-LOCATED = re.compile(r":\d+:\d+: |option '|argument '|command '|standard (output|input|error)|environment variable|"
-                     r"plugin '|\.(yaml|yml|so)'?: ")
+LOCATED = re.compile(r":\d+:\d+: |option '|argument '|the [A-Z]+ argument|command '|found '|standard (output|input|error)|"
+                     r"environment variable|plugin '|\.(yaml|yml|so)'?: ")
 
 
 def located(line):
