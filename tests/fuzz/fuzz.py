@@ -161,7 +161,7 @@ def generate_case(rng, help_table=None):
     if strategy == "help":
         words = " ".join(COMMAND_WORDS.get(command, command).split()[:2])
         args += strategies.help_options(rng, help_table, words, placeholder_scratch, placeholder_input, names)
-    else:
+    elif strategy in ("tree", "env") or rng.random() < 0.4:  # a file strategy's case mostly tests the file alone
         args += random_options(rng, spec, placeholder_scratch, placeholder_input, names, set(args))
     env, streams = strategies.random_environment(rng) if strategy == "env" else ({}, {})
     return Case(command, args, input_text, folder=spec["files"], encoding=encoding, env=env, streams=streams,
