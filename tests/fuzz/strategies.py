@@ -218,6 +218,29 @@ def graph_edit(rng, root):
                 (yaml.ScalarNode("tag:yaml.org,2002:str", "value"), target.value[i])])
 
 
+def share_equal_scalars(rng, nodes):
+    """Equal scalar values become one node (written once with an anchor, then as aliases): the same
+    document to a reader that follows aliases, so the case should pass where the original does."""
+    groups = {}
+    for node in nodes:
+        pairs = node.value if isinstance(node, yaml.MappingNode) else [(None, v) for v in node.value]
+        for _, v in pairs:
+            if isinstance(v, yaml.ScalarNode) and v.value:
+                groups.setdefault((v.tag, v.value, v.style), []).append(v)
+    shared = [g for g in groups.values() if len(g) > 1]
+    if not shared:
+        return
+    first = rng.choice(shared)[0]
+    key = (first.tag, first.value, first.style)
+    for node in nodes:
+        if isinstance(node, yaml.MappingNode):
+            node.value = [(k, first if isinstance(v, yaml.ScalarNode) and (v.tag, v.value, v.style) == key else v)
+                          for k, v in node.value]
+        else:
+            node.value = [first if isinstance(v, yaml.ScalarNode) and (v.tag, v.value, v.style) == key else v
+                          for v in node.value]
+
+
 def mutate_graph(rng, text):
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
@@ -226,8 +249,11 @@ def mutate_graph(rng, text):
     if not isinstance(root, (yaml.MappingNode, yaml.SequenceNode)):
         return text
     try:
-        for _ in range(rng.choice([1, 1, 2, 3])):
-            graph_edit(rng, root)
+        if rng.random() < 0.35:
+            share_equal_scalars(rng, containers(root, []))
+        else:
+            for _ in range(rng.choice([1, 1, 2, 3])):
+                graph_edit(rng, root)
         text = yaml.serialize(root, allow_unicode=True, width=10**6)
     except (yaml.YAMLError, RecursionError, ValueError, TypeError):
         return text
