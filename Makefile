@@ -1,31 +1,55 @@
 # Thin wrapper around CMake (in the style of Neovim's): `make demo` and `make test` are the
 # two commands of the README's quick start. Each installs missing Debian packages first.
+# `make demo` (and `make build`) installs only what the executable and its plugins need and builds
+# only them (the CMake target gearkit_runtime), so that a fresh machine's first result waits for no
+# test (issue 26); `make test` then adds the test-only packages and targets to the same build tree.
 BUILD_DIR     ?= build
 BUILD_TYPE    ?= Release
 JOBS          ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS   ?=
 DEMO_DIR      ?= gearkit-demo
-GENERATOR     := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: all deps configure build demo test test-sanitize bench install clean fuzz
+.PHONY: all deps deps-test configure configure-test build build-all demo test test-sanitize bench install \
+        clean fuzz
 
 all: build
 
 deps:
 	@./scripts/setup-deps.sh
 
-configure: deps
-	@if [ ! -f $(BUILD_DIR)/CMakeCache.txt ]; then \
-	  cmake -S . -B $(BUILD_DIR) $(GENERATOR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS); \
-	fi
+deps-test:
+	@./scripts/setup-deps.sh --test
 
+# A new build tree is configured with Ninja when it is there (the generator is looked up when the
+# recipe runs: on a fresh machine the packages come in after make has read this file) and without
+# the tests; an existing tree keeps its generator and its settings.
+define configure_tree
+	@if [ ! -f $(BUILD_DIR)/CMakeCache.txt ]; then \
+	  cmake -S . -B $(BUILD_DIR) $$(command -v ninja >/dev/null 2>&1 && echo "-G Ninja") \
+	    -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DGEARKIT_BUILD_TESTS=$(1) $(CMAKE_FLAGS); \
+	elif [ "$(1)" = ON ] && ! grep -q '^GEARKIT_BUILD_TESTS:BOOL=ON$$' $(BUILD_DIR)/CMakeCache.txt; then \
+	  cmake -S . -B $(BUILD_DIR) -DGEARKIT_BUILD_TESTS=ON $(CMAKE_FLAGS); \
+	fi
+endef
+
+configure: deps
+	$(call configure_tree,OFF)
+
+configure-test: deps-test
+	$(call configure_tree,ON)
+
+# The executable, its plugins and modules, and every library: nothing of the tests.
 build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target gearkit_runtime
+
+# Everything, the tests included.
+build-all: configure-test
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 demo: build
 	$(BUILD_DIR)/bin/gearkit demo --output $(DEMO_DIR)
 
-test: build
+test: build-all
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)
 
 # The CI's second configuration: AddressSanitizer + UndefinedBehaviorSanitizer, warnings as errors.
@@ -38,12 +62,14 @@ test-sanitize:
 N         ?= 2000
 SEED      ?= 1
 FUZZ_SAVE ?= fuzz-failures
-fuzz: build
+fuzz: build deps-test
 	python3 tests/fuzz/fuzz.py --exe $(BUILD_DIR)/bin/gearkit --cases $(N) --seed $(SEED) --jobs $(JOBS) \
 	  --save $(FUZZ_SAVE)
 
-bench: deps
-	cmake -S . -B build-bench $(GENERATOR) -DCMAKE_BUILD_TYPE=Release -DGEARKIT_BUILD_BENCH=ON -DGEARKIT_BUILD_TESTS=OFF
+bench:
+	@./scripts/setup-deps.sh --bench
+	cmake -S . -B build-bench $$([ -f build-bench/CMakeCache.txt ] || ! command -v ninja >/dev/null || echo "-G Ninja") \
+	  -DCMAKE_BUILD_TYPE=Release -DGEARKIT_BUILD_BENCH=ON -DGEARKIT_BUILD_TESTS=OFF
 	cmake --build build-bench -j $(JOBS)
 
 install: build

@@ -1,25 +1,46 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages gearkit builds and tests with, if any is missing.
+# Installs the Debian 12 packages gearkit needs, if any is missing.
+#   setup-deps.sh           what the executable and its plugins need to build and run (`make demo`,
+#                           `make build`, `make install`)
+#   setup-deps.sh --test    and what the test suite needs besides (`make test`): GoogleTest, Python
+#                           with ezdxf and PyYAML, ctags, and the HTML/PDF renderers of the render test
+#   setup-deps.sh --bench   and what the benchmarks need besides (`make bench`)
+# The groups are kept apart so that a fresh machine's first result (`make demo`) waits for no
+# browser, CAD program or test framework (issue 26, section 4).
 # Idempotent: when everything is present it runs no apt command at all; otherwise it runs
 # `apt-get update` once and installs only what is missing.
 set -euo pipefail
 
-packages=(
+build_packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev
   libsuitesparse-dev
-  libboost-dev libboost-program-options-dev libboost-filesystem-dev
+  libboost-dev libboost-program-options-dev
   libyaml-cpp-dev libyaml-dev nlohmann-json3-dev libfmt-dev
   libcgal-dev libgmp-dev libmpfr-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-ezdxf python3-yaml
-  universal-ctags
-  libslvs1-dev
   libmuparser-dev
   libnlopt-dev
   libginac-dev
+)
+test_packages=(
+  libgtest-dev libgmock-dev
+  python3 python3-ezdxf python3-yaml
+  universal-ctags
   chromium librecad poppler-utils   # ctest render.html_and_pdf: HTML pages in a browser, DXF to PDF
 )
+bench_packages=(
+  libbenchmark-dev
+  libslvs1-dev                      # SolveSpace's solver, the peer of bench_kin
+)
+
+packages=("${build_packages[@]}")
+for arg in "$@"; do
+  case "$arg" in
+    --test) packages+=("${test_packages[@]}") ;;
+    --bench) packages+=("${bench_packages[@]}") ;;
+    *) echo "setup-deps: unknown argument '$arg' (expected --test or --bench)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
