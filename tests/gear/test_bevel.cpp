@@ -226,6 +226,18 @@ TEST(Bevel, GleasonSpiralProportions) {
   EXPECT_EQ(r.gear[1].hand, gg::SpiralHand::right);
 }
 
+// Zerol bevels (beta_m = 0, curved teeth) take the straight-bevel proportions (docs/bevel.md,
+// decision): the same table as KHK's straight pair; a spiral angle is refused for them.
+TEST(Bevel, ZerolTakesTheStraightProportions) {
+  gg::BevelPairInput in = khk_example();
+  in.type = gg::BevelType::zerol;
+  const auto r = gg::compute_bevel_pair(in);
+  EXPECT_NEAR(r.gear[0].h_ae, 4.035, 5e-4);  // KHK straight bevel table
+  EXPECT_NEAR(r.gear[0].d_ae, 67.2180, 5e-5);
+  in.beta_m = 5.0 * kDeg;
+  EXPECT_THROW(gg::compute_bevel_pair(in), gg::GeometryError);
+}
+
 // Virtual gears (ISO 10300-1) by hand for the KHK pair: z_v = z / cos delta = 20/cos 26.565 =
 // 22.3607 and 40/cos 63.435 = 89.4427; d_v = d_m / cos delta; the contact ratio from the
 // lengths of the path of contact of the two virtual spur gears (tip radius r_v + h_am).
