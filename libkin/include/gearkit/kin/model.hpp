@@ -97,10 +97,12 @@ struct Spring {
 
 class Model {
  public:
-  /// Adds a moving body. @returns its index. @throws std::invalid_argument on a duplicate name.
+  /// Adds a moving body (points, centre of mass [m], mass [kg], inertia [kg m^2], drawn pose [m,
+  /// rad]). @returns its index. @throws std::invalid_argument on a duplicate name.
   int add_body(Body body);
   /// Adds a constraint. Drivers are also listed in drivers(). @returns its index.
-  /// @throws std::invalid_argument if it names a body index out of range or its name repeats.
+  /// @throws std::invalid_argument if it is null, names a body index out of range or its name
+  ///   repeats.
   int add_constraint(std::string name, std::shared_ptr<const Constraint> constraint);
   /// Marks constraint `constraint` (a driver) with what it drives and its default value.
   /// @param constraint  index in constraints() of a driver; @param value  default f0 [rad or m]
@@ -115,6 +117,9 @@ class Model {
   /// @throws std::invalid_argument if the index is out of range.
   void set_driver_effort(int driver, double effort);
 
+  /// Loads and gravity: forces [N] at body points [m], torques [N m], springs [N/m, m, N],
+  /// gravity [m/s^2]. Not checked against the bodies when added; free to change after a Data is
+  /// made. @throws std::bad_alloc only.
   void add_force(PointForce f) { forces_.push_back(std::move(f)); }
   void add_torque(BodyTorque t) { torques_.push_back(std::move(t)); }
   void add_spring(Spring s) { springs_.push_back(std::move(s)); }
