@@ -65,8 +65,11 @@ TEST(DerivativeCheck, FindsAWrongJacobianColumn) {
   const testing::DerivativeReport r = testing::check_derivatives(MovingPoint(Plant::jacobian_sign));
   ASSERT_TRUE(found(r, "Phi_q"));
   EXPECT_FALSE(found(r, "Phi_t"));
-  for (const auto& m : r.mismatches)
-    if (m.quantity == "Phi_q") EXPECT_EQ(m.column, 2);  // the theta column, the one planted
+  for (const auto& m : r.mismatches) {
+    if (m.quantity == "Phi_q") {
+      EXPECT_EQ(m.column, 2);  // the theta column, the one planted
+    }
+  }
   // (gamma is found wrong too: it is checked through Phi_q qdd, with the analytic Phi_q.)
   EXPECT_NE(r.describe("moving_point").find("moving_point: Phi_q row"), std::string::npos);
 }
