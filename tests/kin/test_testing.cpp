@@ -1,6 +1,6 @@
 // kin::testing::check_derivatives, the derivative checker every element type is held to
-// (tests/kin/test_joints.cpp: the built-in joints; tests/plugin/test_element_derivatives.cpp:
-// every element type a plugin registers). A checker that cannot fail proves nothing: here it
+// (tests/kin/test_joints.cpp: the built-in joints; tests/elements: the elements plugins
+// register). A checker that cannot fail proves nothing: here it
 // must find each kind of error planted in an otherwise correct constraint, and pass the
 // correct one. The reference is the hand derivation of a point fixed to a body,
 // Phi = r + A(theta) s' - c(t) with c(t) = (v t, 0):

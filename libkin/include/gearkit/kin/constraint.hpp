@@ -148,7 +148,7 @@ class Constraint {
   virtual bool is_driver() const { return false; }
   /// Evaluates the rows at `in`: Phi [m or rad per row], Phi_q [per m, per rad], Phi_t [per s]
   /// and gamma [per s^2], in the row's unit. Must not throw and must not allocate on the heap
-  /// (the solver calls it at every Newton iteration; the tests count allocations).
+  /// (the solver calls it at every Newton iteration).
   /// @param in  the states of bodies() in that order, the time [s] and a driver's input f0
   /// @param out  views of exactly equations() rows; every entry must be written
   virtual void evaluate(const ConstraintInput& in, ConstraintOutput& out) const = 0;

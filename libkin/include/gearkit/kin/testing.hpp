@@ -2,7 +2,7 @@
 // A test helper for anyone who writes a Constraint (a joint, a driver, a plugin's element): its
 // Phi_q, Phi_t and gamma checked against finite differences of its own Phi at random
 // configurations. It is how libkin's built-in joints, libelements' elements and every element
-// type a plugin registers are tested (tests/kin/test_testing.cpp, tests/plugin), and what an
+// type of libelements are tested (tests/kin/test_joints.cpp, tests/elements), and what an
 // out-of-tree plugin should run on its own elements. Not used by the solver.
 //
 // What is compared, at each configuration (q, qd, qdd, t, f0) drawn at random (positions in
