@@ -1,9 +1,9 @@
 #pragma once
 // A test helper for anyone who writes a Constraint (a joint, a driver, a plugin's element): its
 // Phi_q, Phi_t and gamma checked against finite differences of its own Phi at random
-// configurations. It is how libkin's built-in joints, libelements' elements and every element
-// type of libelements are tested (tests/kin/test_joints.cpp, tests/elements), and what an
-// out-of-tree plugin should run on its own elements. Not used by the solver.
+// configurations. It is how libkin's built-in joints and libelements' elements (the element
+// types the plugins register) are tested (tests/kin/test_joints.cpp, tests/elements), and what
+// an out-of-tree plugin should run on its own elements. Not used by the solver.
 //
 // What is compared, at each configuration (q, qd, qdd, t, f0) drawn at random (positions in
 // [-position_range, position_range] m, angles in [-pi, pi] rad, velocities and accelerations in
