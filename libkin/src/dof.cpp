@@ -3,6 +3,7 @@
 #include <gearkit/kin/solve.hpp>
 
 #include "sparse_rank.hpp"
+#include "tolerances.hpp"
 
 #include <map>
 
@@ -10,10 +11,7 @@ namespace gearkit::kin {
 
 namespace {
 
-// Relative threshold of the rank tests: a constraint row is dependent when what is left of it,
-// after removing its components along the rows ordered before it, is below 1e-9 of the
-// largest row norm.
-constexpr double kRankTolerance = 1e-9;
+using tolerance::kRankTolerance;  // relative threshold of the rank tests: tolerances.hpp
 
 // The rows of Phi_q the mobility counts (joints and elements; drivers are left out), with the
 // constraint each belongs to; fills the counts and the written-out Gruebler-Kutzbach sum.

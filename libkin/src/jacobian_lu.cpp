@@ -1,4 +1,5 @@
 #include "jacobian_lu.hpp"
+#include "tolerances.hpp"
 
 #include <klu.h>
 
@@ -30,15 +31,12 @@ int parity(const int* permutation, int n, std::vector<char>& visited) {
   return (n - cycles) % 2 == 0 ? 1 : -1;
 }
 
-// A refactorisation keeps the pivots of the last full factorisation; once the pivot ratio has
-// dropped by this factor since then, the pivots are chosen again (partial pivoting).
-constexpr double kPivotDecay = 1e-3;
-// Below this pivot ratio the cheap estimate is replaced by KLU's 1-norm condition estimate.
-constexpr double kCheapRcondLimit = 1e-4;
 // Systems up to this many coordinates are factorised without the block triangular form.
 constexpr int kSmallSystem = 64;
-// A matrix whose reciprocal condition is at or below this is treated as singular.
-constexpr double kSingularRcond = 1e-13;
+// The pivot and singularity tolerances: tolerances.hpp.
+using tolerance::kCheapRcondLimit;
+using tolerance::kPivotDecay;
+using tolerance::kSingularRcond;
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include <gearkit/kin/solve.hpp>
 
 #include "jacobian_lu.hpp"
+#include "tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -180,7 +181,7 @@ bool factorize(const Model& model, Data& data) {
     return ok;
   }
   // Redundant (more equations than coordinates) or under-driven: least squares via QR.
-  data.dense_qr.setThreshold(1e-10);
+  data.dense_qr.setThreshold(tolerance::kQrRankThreshold);
   data.dense_qr.compute(data.jacobian());
   if (data.dense_qr.rank() < model.coordinates()) {
     data.singular = true;

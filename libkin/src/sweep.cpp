@@ -1,5 +1,7 @@
 #include <gearkit/kin/sweep.hpp>
 
+#include "tolerances.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,29 +30,37 @@ struct Anchor {
   Eigen::VectorXd dq_predicted;  // scratch of advance(): the tangent the branch should have
 };
 
-// Largest relative change of the tangent dq/d(input) that a step may show against its
-// prediction: a regular step's tangent is predicted to O(h^2) (O(h) without history), while a
-// jump to another branch through a bifurcation changes it at first order (a parallelogram's
-// rocker turns with the crank, an anti-parallelogram's does not). The driven coordinate's own
-// entry is 1, so the norm is never small.
-constexpr double kTangentJump = 0.1, kTangentJumpWithoutHistory = 0.3;
-// Largest fall of rcond(Phi_q) over one step: approaching a singular point by halving divides
-// it by about 2 per step; a step landing on it divides it by orders of magnitude.
-constexpr double kConditioningDrop = 1e-3;
-// A configuration whose rcond(Phi_q) is below this fraction of the best on its branch is taken
-// as singular (a Newton solution "at" a change point converges to within sqrt(tolerance) of it,
-// where the tangent is meaningless): the sweep crosses it instead (cross()).
-constexpr double kSingularRcond = 1e-6;
-constexpr double kStartConditioningDrop = 1e-2;
+// The continuation's tolerances, each with its trade-off: tolerances.hpp.
+using tolerance::kBranchSingularFraction;
+using tolerance::kConditioningDrop;
+using tolerance::kMaxAngleFromPrediction;
+using tolerance::kRegularRcond;
+using tolerance::kStartConditioningDrop;
+using tolerance::kTangentJump;
+using tolerance::kTangentJumpWithoutHistory;
+
+// What advance() did with a step: took it, or the one reason it refused it. Every refusal is
+// answered the same way (the step is halved; at min_step cross() decides what lies there); the
+// reasons are named so that a reader, a debugger or a test can tell the seven tests apart.
+enum class Step {
+  taken,
+  not_converged,        // Newton did not converge, or met a singular Jacobian
+  near_singular,        // rcond below kBranchSingularFraction of the branch's best (or kRegularRcond)
+  conditioning_drop,    // rcond fell by more than kConditioningDrop over the step: landed on a point
+  determinant_flip,     // det(Phi_q) changed sign: a singular position lies inside the step
+  far_from_prediction,  // an angle moved more than kMaxAngleFromPrediction from the prediction
+  no_tangent,           // dq/d(input) could not be solved or is not finite
+  tangent_jump,         // dq/d(input) departs from its prediction: another branch
+};
 
 // Tries to move from `from` to `target`: predicts, solves, and checks that the branch is kept.
 // The prediction integrates the quadratic through the last three sensitivities dq/d(input)
 // (`from`, `previous`, `before`; fewer when absent): its error is O(h^4), so at fine steps the
 // predicted pose usually meets the tolerance without a Newton step. Writes into `to`, whose
 // vectors are reused from one position to the next (a sweep does not allocate per position).
-bool advance(const Model& model, Data& data, int driver, const Anchor& from, const Anchor* previous,
-             const Anchor* before, double target, const SolverOptions& options, bool velocities, Anchor& to,
-             int& iterations) {
+[[nodiscard]] Step advance(const Model& model, Data& data, int driver, const Anchor& from, const Anchor* previous,
+                           const Anchor* before, double target, const SolverOptions& options, bool velocities,
+                           Anchor& to, int& iterations) {
   const double h = target - from.input;
   to.q = from.q + from.dq * h;  // the prediction, kept until the branch check
   to.dq_predicted = from.dq;
@@ -75,26 +85,26 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
   data.inputs(driver) = target;
   const PositionReport report = solve_position(model, data, data.t, options);
   iterations = report.iterations;
-  if (!report.converged || report.singular) return false;
+  if (!report.converged || report.singular) return Step::not_converged;
   // Too close to a singular configuration to know which branch continues (a toggle, or a
   // bifurcation such as a flattened parallelogram): treat as the dead point.
-  if (data.rcond < std::max(1e-10, kSingularRcond * from.rcond_scale)) return false;
+  if (data.rcond < std::max(kRegularRcond, kBranchSingularFraction * from.rcond_scale)) return Step::near_singular;
   // A sudden fall of the conditioning is a landing on or next to a singular configuration (a
   // change point the step ends on), where dq is any solution of a nearly singular system and
   // cannot tell the branch: approached by halving instead, so that cross() takes over there.
-  if (data.rcond < kConditioningDrop * from.rcond) return false;
-  if (from.determinant_sign != 0 && data.determinant_sign != from.determinant_sign) return false;
-  if (largest_angle_change(data.q, to.q) > 0.1) return false;
+  if (data.rcond < kConditioningDrop * from.rcond) return Step::conditioning_drop;
+  if (from.determinant_sign != 0 && data.determinant_sign != from.determinant_sign) return Step::determinant_flip;
+  if (largest_angle_change(data.q, to.q) > kMaxAngleFromPrediction) return Step::far_from_prediction;
   to.input = target;
   to.q = data.q;
   to.determinant_sign = data.determinant_sign;
   to.rcond = data.rcond;
   to.rcond_scale = std::max(from.rcond_scale, data.rcond);
-  if (!input_sensitivity(model, data, driver, to.dq) || !to.dq.allFinite()) return false;
+  if (!input_sensitivity(model, data, driver, to.dq) || !to.dq.allFinite()) return Step::no_tangent;
   const double jump = (to.dq - to.dq_predicted).lpNorm<Eigen::Infinity>();
   const double scale = std::max(to.dq.lpNorm<Eigen::Infinity>(), to.dq_predicted.lpNorm<Eigen::Infinity>());
-  if (jump > (history ? kTangentJump : kTangentJumpWithoutHistory) * scale) return false;
-  if (!velocities) return true;
+  if (jump > (history ? kTangentJump : kTangentJumpWithoutHistory) * scale) return Step::tangent_jump;
+  if (!velocities) return Step::taken;
   // Velocities and accelerations with the factorisation at hand. Phi_q qd = -Phi_t; when Phi_t
   // vanishes off the swept driver's row (no other driver moves: joints and elements do not
   // depend on time) the right-hand side is a multiple of that row's unit vector, so qd is the
@@ -108,7 +118,7 @@ bool advance(const Model& model, Data& data, int driver, const Anchor& from, con
     to.qd = data.qd;
     to.qdd = data.qdd;
   }
-  return true;
+  return Step::taken;
 }
 
 // The cubic Hermite curve through the anchors' q with their tangents dq, evaluated (or
@@ -162,7 +172,7 @@ std::array<double, 3> crossing_steps(const SweepOptions& options) {
 // solved a thousand times tighter, so that the extrapolations through them stay exact.
 SolverOptions tight(const SolverOptions& options) {
   SolverOptions o = options;
-  o.tolerance *= 1e-3;
+  o.tolerance *= tolerance::kTightFactor;
   o.max_iterations = std::max(o.max_iterations, 50);
   return o;
 }
@@ -181,13 +191,13 @@ bool start_beside_change_point(const Model& model, Data& data, const SweepOption
     data.q = guess;
     data.inputs(options.driver) = options.start + 2.0 * direction * delta;
     const PositionReport r = assemble(model, data, data.t, tight(options.solver));
-    if (!r.converged || r.singular || data.rcond < 1e-10) continue;
+    if (!r.converged || r.singular || data.rcond < kRegularRcond) continue;
     Anchor far;
     far.rcond_scale = 0.0;
     int iterations = 0;
     if (!settle_anchor(model, data, options, data.inputs(options.driver), far) ||
-        !advance(model, data, options.driver, far, nullptr, nullptr, options.start + direction * delta,
-                 tight(options.solver), options.velocities, first, iterations))
+        advance(model, data, options.driver, far, nullptr, nullptr, options.start + direction * delta,
+                tight(options.solver), options.velocities, first, iterations) != Step::taken)
       continue;
     interpolate(far, first, options.start, start_sample);
     data.q = start_sample.q;
@@ -260,7 +270,8 @@ OutputExtreme locate_extreme(const Model& model, Data& data, const SweepOptions&
     if (!(x > std::min(a.input, b.input) && x < std::max(a.input, b.input))) x = 0.5 * (a.input + b.input);
     Anchor mid;
     int iterations = 0;
-    if (!advance(model, data, options.driver, a, nullptr, nullptr, x, options.solver, false, mid, iterations)) break;
+    if (advance(model, data, options.driver, a, nullptr, nullptr, x, options.solver, false, mid, iterations) != Step::taken)
+      break;
     data.q = mid.q;
     const double dm = output_derivative(model, data, out, mid.dq);
     best = mid;
@@ -383,7 +394,8 @@ class Continuation {
       const double remaining = target - current_.input;
       if (std::abs(h) > std::abs(remaining)) h = remaining;
       if (advance(model_, data_, options_.driver, current_, &previous_, &before_, current_.input + h,
-                  factorised_at_current_ ? chord_ : options_.solver, options_.velocities, next_, iterations)) {
+                  factorised_at_current_ ? chord_ : options_.solver, options_.velocities, next_, iterations) ==
+          Step::taken) {
         factorised_at_current_ = true;
         note_extremes();
         std::swap(before_, previous_);
@@ -415,10 +427,10 @@ class Continuation {
       for (const double delta : crossing_steps(options_)) {
       if (!(delta > 100.0 * options_.min_step)) continue;
       Anchor r1, r2, c;
-      if (!advance(model_, data_, options_.driver, current_, nullptr, nullptr, s - direction * delta, tight(options_.solver),
-                   options_.velocities, r1, iterations) ||
-          !advance(model_, data_, options_.driver, r1, nullptr, nullptr, s - 2.0 * direction * delta, tight(options_.solver),
-                   options_.velocities, r2, iterations) ||
+      if (advance(model_, data_, options_.driver, current_, nullptr, nullptr, s - direction * delta, tight(options_.solver),
+                  options_.velocities, r1, iterations) != Step::taken ||
+          advance(model_, data_, options_.driver, r1, nullptr, nullptr, s - 2.0 * direction * delta, tight(options_.solver),
+                  options_.velocities, r2, iterations) != Step::taken ||
           !jump_past(r2, r1, s + direction * delta, c, iterations))
         continue;
       ChangePoint cp;
@@ -449,7 +461,7 @@ class Continuation {
   }
 
   // The input of the singular configuration between the regular anchors a and b of one branch
-  // (the continuation stops within ~1e-6 rad of it, where rcond reaches kSingularRcond): by
+  // (the continuation stops within ~1e-6 rad of it, where rcond reaches kBranchSingularFraction): by
   // bisection on the sign of det(Phi_q) along their Hermite curve when it changes, else by
   // golden-section search for the least singular value (a redundant model's QR has no sign).
   double locate_singular_point(const Anchor& a, const Anchor& b) {
@@ -497,7 +509,7 @@ class Continuation {
     data_.inputs(options_.driver) = input;
     const PositionReport r = solve_position(model_, data_, data_.t, tight(options_.solver));
     iterations = r.iterations;
-    if (!r.converged || r.singular || data_.rcond < 1e-10) return false;
+    if (!r.converged || r.singular || data_.rcond < kRegularRcond) return false;
     const double h = std::abs(input - b.input), scale = std::max(1.0, predicted_dq.lpNorm<Eigen::Infinity>());
     if ((data_.q - predicted).lpNorm<Eigen::Infinity>() > 0.1 * h * scale) return false;
     to.rcond_scale = b.rcond_scale;
@@ -547,7 +559,7 @@ class Continuation {
         data_.inputs(options_.driver) = c.input;
         const PositionReport r = solve_position(model_, data_, data_.t, tight(options_.solver));
         iterations = r.iterations;
-        if (!r.converged || r.singular || data_.rcond < 1e-10) continue;
+        if (!r.converged || r.singular || data_.rcond < kRegularRcond) continue;
         if ((data_.q - continuing).lpNorm<Eigen::Infinity>() < 0.05 * std::abs(delta) * scale) continue;  // the same
         if (!settle(c.input, other)) continue;
         const Eigen::VectorXd chord = (other.q - point) / delta;

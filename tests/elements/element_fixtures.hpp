@@ -4,12 +4,14 @@
 #include <gearkit/kin/joints.hpp>
 #include <gearkit/kin/model.hpp>
 #include <gearkit/kin/solve.hpp>
+#include <gearkit/kin/testing.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +55,21 @@ inline void solve_all(const kin::Model& model, kin::Data& data) {
   ASSERT_TRUE(p.converged) << p.message;
   ASSERT_TRUE(kin::solve_velocity(model, data));
   ASSERT_TRUE(kin::solve_acceleration(model, data));
+}
+
+/// Phi_q, Phi_t and gamma of `c` against finite differences of its Phi at random
+/// configurations (kin::testing::check_derivatives, the checker of every element type).
+inline void expect_derivatives(const kin::Constraint& c) {
+  const kin::testing::DerivativeReport r = kin::testing::check_derivatives(c);
+  EXPECT_TRUE(r.ok()) << r.describe(c.kind());
+  EXPECT_GE(r.entries_checked, 16 * 5);  // at least a row of one moving body per configuration
+}
+
+/// The same for the constraint of `model` named `name`.
+inline void expect_derivatives(const kin::Model& model, const std::string& name) {
+  const std::optional<int> index = model.constraint_index(name);
+  ASSERT_TRUE(index) << name;
+  expect_derivatives(*model.constraints()[static_cast<std::size_t>(*index)].constraint);
 }
 
 /// The value a reaction names `symbol`, or NaN.

@@ -283,3 +283,47 @@ TEST(CamFollower, DrawingGivesTheFlatFace) {
 
 }  // namespace
 }  // namespace gearkit::elements
+
+namespace gearkit::elements {
+namespace {
+
+// Phi_q, Phi_t and gamma of both followers against finite differences of their Phi (issue 27,
+// item 7). The oscillating follower's gamma, s'' omega_cam^2, was tested by nothing before.
+TEST(CamFollower, OscillatingFollowerDerivativesMatchFiniteDifferences) {
+  expect_derivatives(cam_rocker(0.0).model, "cam contact");  // clockwise, cycloidal and 3-4-5
+  kin::Model model;
+  const int cam_body = add_body(model, "cam", {0, 0}, 0.0, {});
+  const int rocker = add_body(model, "rocker", {0.1, 0}, 0.0, {});
+  const int frame = add_body(model, "frame", {0, 0}, 0.0, {});
+  CamFollowerParameters p;
+  p.cam = cam_body;
+  p.path = FollowerPath::oscillating;
+  p.follower = rocker;
+  p.relative_to = frame;  // measured from a moving link, counter-clockwise cam
+  p.base = 0.4;
+  p.cam_zero = 0.3;
+  p.motion = rocker_program();
+  expect_derivatives(*make_cam_follower(model, p));
+}
+
+TEST(CamFollower, TranslatingFollowerDerivativesMatchFiniteDifferences) {
+  kin::Model model;
+  const int cam_body = add_body(model, "cam", {0, 0}, 0.0, {});
+  const int follower = add_body(model, "follower", {0, 0.05}, 0.0, {});
+  const int guide = add_body(model, "guide", {0, 0}, 0.0, {});
+  CamFollowerParameters p;
+  p.cam = cam_body;
+  p.point = {follower, {0.01, -0.02}};
+  p.guide = {guide, {0.03, 0.0}};  // a guide on a moving link: its rotation enters Phi_q
+  p.axis = 80 * kDeg;
+  p.base = 0.05;
+  p.clockwise = true;
+  p.motion = rocker_program();  // lifts read as metres: 20 deg = 0.35 m, large but smooth
+  expect_derivatives(*make_cam_follower(model, p));
+  p.guide = {kin::kGround, {0.0, 0.0}};
+  p.clockwise = false;
+  expect_derivatives(*make_cam_follower(model, p));
+}
+
+}  // namespace
+}  // namespace gearkit::elements

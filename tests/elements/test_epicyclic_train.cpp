@@ -106,3 +106,28 @@ TEST(EpicyclicTrain, DrawingGivesTheCentralMembersAndTheArm) {
 
 }  // namespace
 }  // namespace gearkit::elements
+
+namespace gearkit::elements {
+namespace {
+
+// Phi_q, Phi_t and gamma of Willis' equation against finite differences of its Phi (issue 27,
+// item 7): with a fixed member (the ground) and with all three members moving.
+TEST(EpicyclicTrain, DerivativesMatchFiniteDifferences) {
+  kin::Model model;
+  const int sun = add_body(model, "sun", {0, 0}, 0.0, {});
+  const int carrier = add_body(model, "carrier", {0, 0}, 0.0, {});
+  const int ring = add_body(model, "ring", {0, 0}, 0.0, {});
+  EpicyclicTrainParameters p;
+  p.input = sun;
+  p.output = kin::kGround;
+  p.arm = carrier;
+  p.driving = {24, 18};
+  p.driven = {18, 60};
+  p.externals = 1;
+  expect_derivatives(*make_epicyclic_train(model, p));
+  p.output = ring;
+  expect_derivatives(*make_epicyclic_train(model, p));
+}
+
+}  // namespace
+}  // namespace gearkit::elements

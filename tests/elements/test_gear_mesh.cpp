@@ -185,3 +185,27 @@ TEST(GearMesh, ImpossibleParametersNameTheirField) {
 
 }  // namespace
 }  // namespace gearkit::elements
+
+namespace gearkit::elements {
+namespace {
+
+// Phi_q, Phi_t and gamma of the mesh against finite differences of its Phi (issue 27, item 7):
+// external and internal pairs, on fixed axes and on a moving carrier.
+TEST(GearMesh, DerivativesMatchFiniteDifferences) {
+  expect_derivatives(geared_five_bar(90 * kDeg).model, "mesh");
+  kin::Model model;
+  const int sun = add_body(model, "sun", {0, 0}, 0.3, {});
+  const int ring = add_body(model, "ring", {0, 0}, -0.2, {});
+  const int arm = add_body(model, "arm", {0, 0}, 0.1, {});
+  GearMeshParameters p;
+  p.gear1 = sun;
+  p.gear2 = ring;
+  p.carrier = arm;
+  p.z1 = 18;
+  p.z2 = 72;
+  p.internal = true;
+  expect_derivatives(*make_gear_mesh(model, p));
+}
+
+}  // namespace
+}  // namespace gearkit::elements

@@ -14,6 +14,8 @@ class AngleRelation final : public Constraint {
   /// @param terms (body, coefficient) pairs; kGround terms are allowed and contribute nothing.
   /// @param constant [rad] the value of the sum (the phase of the drawn configuration).
   /// @param kind what the relation is ("gear_mesh", "epicyclic_train").
+  /// Bodies are checked when the relation is added to a Model (Model::add_constraint).
+  /// @throws std::bad_alloc only.
   AngleRelation(std::vector<std::pair<int, double>> terms, double constant, std::string kind)
       : terms_(std::move(terms)), constant_(constant), kind_(std::move(kind)) {}
   std::string kind() const override { return kind_; }

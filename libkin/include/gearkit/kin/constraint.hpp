@@ -43,13 +43,13 @@ struct BodyState {
   double cos_theta = 1.0;  ///< cos(theta), kept by set_theta()
   double sin_theta = 0.0;  ///< sin(theta), kept by set_theta()
 
-  /// Sets theta [rad] and its cached cosine and sine.
+  /// Sets theta [rad] and its cached cosine and sine. Never throws.
   void set_theta(double angle) {
     theta = angle;
     cos_theta = std::cos(angle);
     sin_theta = std::sin(angle);
   }
-  /// A(theta) s: the body-fixed vector s' [m] expressed in the ground frame.
+  /// A(theta) s: the body-fixed vector s' [m] expressed in the ground frame [m]. Never throws.
   Eigen::Vector2d rotated(const Eigen::Vector2d& s) const {
     return {cos_theta * s.x() - sin_theta * s.y(), sin_theta * s.x() + cos_theta * s.y()};
   }
@@ -129,46 +129,56 @@ struct ConstraintDrawing {
 };
 
 /// A set of scleronomic or rheonomic equations between the coordinates of a few bodies.
+/// kin::testing::check_derivatives (testing.hpp) checks an implementation's Phi_q, Phi_t and
+/// gamma against finite differences of its Phi; every built-in and plugin element passes it.
 class Constraint {
  public:
   virtual ~Constraint();
 
-  /// Short kind, e.g. "revolute", "gear_mesh", "angle_driver".
+  /// Short kind, e.g. "revolute", "gear_mesh", "angle_driver". @throws std::bad_alloc only.
   virtual std::string kind() const = 0;
   /// Number of equations (rows). Also what the constraint subtracts in the Gruebler-Kutzbach
-  /// count (a revolute removes 2 freedoms, a pin in slot 1, a gear mesh 1).
+  /// count (a revolute removes 2 freedoms, a pin in slot 1, a gear mesh 1). Must not throw.
   virtual int equations() const = 0;
-  /// Bodies whose coordinates appear in the equations (kGround allowed).
+  /// Bodies whose coordinates appear in the equations (kGround allowed); Model::add_constraint
+  /// checks them. @throws std::bad_alloc only.
   virtual std::vector<int> bodies() const = 0;
   /// True for drivers (prescribed motions). Drivers are left out of the Gruebler count and of
   /// the rank test; their Lagrange multiplier is the driving force or torque.
   virtual bool is_driver() const { return false; }
-  /// Evaluates the rows at `in`. Must not throw and must not allocate on the heap.
+  /// Evaluates the rows at `in`: Phi [m or rad per row], Phi_q [per m, per rad], Phi_t [per s]
+  /// and gamma [per s^2], in the row's unit. Must not throw and must not allocate on the heap
+  /// (the solver calls it at every Newton iteration).
+  /// @param in  the states of bodies() in that order, the time [s] and a driver's input f0
+  /// @param out  views of exactly equations() rows; every entry must be written
   virtual void evaluate(const ConstraintInput& in, ConstraintOutput& out) const = 0;
   /// The reaction for the multipliers `lambda` (one per equation) at the solved state `in`. The
   /// constraint applies the generalised forces -Phi_q^T lambda to its bodies. The default gives
   /// that force and moment (about the frame origin) on the first body and names no values;
   /// elements override it to report what an engineer reads (tooth force, contact force).
   /// May allocate; called once per reported position, not in the solver loops.
+  /// @param in  the solved state, as for evaluate()
+  /// @param lambda  the constraint's multipliers, equations() of them [N or N m per row unit]
+  /// @throws std::bad_alloc only.
   virtual Reaction reaction(const ConstraintInput& in, std::span<const double> lambda) const;
   /// What pictures draw of the constraint beyond its bodies' points (cams, train members); the
-  /// default is nothing. Plugin API 4.
+  /// default is nothing. Plugin API 4. @throws std::bad_alloc only.
   virtual ConstraintDrawing drawing() const { return {}; }
 };
 
 // Small helpers shared by the built-in constraints and the plugins' elements.
 
-/// A(theta) s: a body-fixed vector s' [m] expressed in the ground frame.
+/// A(theta) s: a body-fixed vector s' [m] expressed in the ground frame, theta [rad]. Never throws.
 inline Eigen::Vector2d rotate(double theta, const Eigen::Vector2d& s) {
   const double c = std::cos(theta), si = std::sin(theta);
   return {c * s.x() - si * s.y(), si * s.x() + c * s.y()};
 }
 
 /// The vector v turned by +90 deg (the derivative of A(theta) s with respect to theta is
-/// perp(A s)).
+/// perp(A s)). Never throws.
 inline Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
-/// z component of the planar cross product a x b.
+/// z component of the planar cross product a x b [product of the units]. Never throws.
 inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }

@@ -18,7 +18,8 @@ class JacobianLU;  // the sparse LU of Phi_q (SuiteSparse KLU), private to libki
 class Data {
  public:
   /// Sizes the workspace for `model` and starts from the model's guessed poses and the
-  /// drivers' default values.
+  /// drivers' default values. A Data stays valid for `model` until a body, constraint or
+  /// driver is added to it (check_data). @throws std::bad_alloc only.
   explicit Data(const Model& model);
   Data(const Data&) = delete;
   Data& operator=(const Data&) = delete;
@@ -51,7 +52,7 @@ class Data {
   /// Small values mean a dead point, toggle or change point is near.
   double rcond = 0.0;
 
-  /// Phi_q as a dense matrix (a copy).
+  /// Phi_q as a dense matrix (a copy). @throws std::bad_alloc only.
   Eigen::MatrixXd jacobian() const;
 
   // Workspace (read by the solver; not part of the results).
@@ -102,7 +103,7 @@ class DataMismatch : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
-/// Throws the DataMismatch that check_data() found.
+/// Throws the DataMismatch that check_data() found. @throws DataMismatch always.
 [[noreturn]] void throw_data_mismatch(const Model& model, const Data& data);
 
 /// Checks that `data` was made for `model` as it is now. Every algorithm of libkin calls it

@@ -28,7 +28,8 @@ struct DofReport {
 /// above, whose cost grows linearly with the size of chain- or lattice-like linkages (a chain
 /// of 1000 four-bar loops, 6003 coordinates, in a few milliseconds). Evaluates the constraints
 /// at data.q (refreshes Phi, Phi_q; the factorisation is marked stale).
-/// @throws std::runtime_error if SuiteSparseQR runs out of memory.
+/// @throws DataMismatch if `data` was not made for `model` as it is now; std::runtime_error if
+///   SuiteSparseQR runs out of memory.
 DofReport dof(const Model& model, Data& data);
 
 }  // namespace gearkit::kin

@@ -14,6 +14,8 @@ namespace gearkit::kin {
 /// can point at the offending key.
 class ElementError : public std::invalid_argument {
  public:
+  /// @param field  the parameter's key in mechanism files ("z1")
+  /// @param message  one line saying what was expected and what was found
   ElementError(std::string field, const std::string& message);
   ~ElementError() override;
   const std::string& field() const { return field_; }

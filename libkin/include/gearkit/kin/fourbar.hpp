@@ -25,10 +25,13 @@ struct GrashofResult {
 /// Grashof class from the link lengths [m] (ground, input crank, coupler, output rocker).
 /// Lengths must be positive; the equality s + l = p + q is judged to 1e-9 relative. A loop whose
 /// longest link exceeds the sum of the other three can never close (cannot_assemble).
+/// @param ground, crank, coupler, rocker  link lengths [m], > 0 (not checked)
+/// @throws std::bad_alloc only (the text).
 GrashofResult grashof(double ground, double crank, double coupler, double rocker);
 
 /// Transmission angle [rad] in [0, pi/2]: the acute angle between the coupler (B - A) and the
 /// rocker (B - O4) lines at their common joint; pi/2 is ideal, below ~40 deg is poor.
+/// @param coupler, rocker  the two lines' direction vectors [m] (any length > 0). Never throws.
 double transmission_angle(const Eigen::Vector2d& coupler, const Eigen::Vector2d& rocker);
 
 /// A model recognised as a four-bar: three bodies, four revolutes, a loop ground-crank-coupler-
@@ -41,9 +44,11 @@ struct FourBar {
 
 /// Recognises a four-bar (or the four-bar loop of a model with exactly those bodies and
 /// joints plus one angle driver). @returns nullopt for anything else.
+/// @throws std::bad_alloc only.
 std::optional<FourBar> find_four_bar(const Model& model);
 
-/// Transmission angle of a recognised four-bar at data.q.
+/// Transmission angle [rad] of a recognised four-bar at data.q [m, rad].
+/// @param f  found by find_four_bar in the model `data` was made for. Never throws.
 double transmission_angle(const FourBar& f, const Data& data);
 
 }  // namespace gearkit::kin

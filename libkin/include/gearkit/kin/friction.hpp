@@ -88,7 +88,10 @@ struct FrictionAnalysis {
 /// square, regular Jacobian, for the applied and inertia forces `applied` (Q*). `lambda` gets
 /// the forward multipliers with friction (lambda0 when the forward sense is self-locking) and
 /// `friction_forces` the generalised friction forces Q_f (zero then).
-/// @throws std::invalid_argument if `driver` is out of range.
+/// @param driver  index in Model::drivers(): its increasing input is the forward sense
+/// @param applied  Q* [N, N m per coordinate]; @param lambda0  one multiplier per equation
+/// @throws std::invalid_argument if `driver` is out of range; DataMismatch if `data` was not
+///   made for `model` as it is now (when data.qd is zero and the motion is the input's).
 FrictionAnalysis analyse_friction(const Model& model, Data& data, int driver, const Eigen::VectorXd& applied,
                                   const Eigen::VectorXd& lambda0, Eigen::VectorXd& lambda,
                                   Eigen::VectorXd& friction_forces);

@@ -1,6 +1,13 @@
 #pragma once
 // Built-in constraints: revolute, prismatic, pin in slot, and the drivers (an angle or a
 // slider displacement prescribed as f(t) = f0 + speed*t + acceleration*t^2/2).
+//
+// Contracts shared by every class here. Body indices are kGround or indices of the Model's
+// bodies; Model::add_constraint checks them, the constructors do not. Points are local [m];
+// an axis_local is any non-zero vector in the guide's (slot's, line's) frame, normalised by the
+// constructor (a zero axis gives NaN rows and a singular Jacobian, not an exception). The
+// constructors throw nothing but std::bad_alloc, except Contact's (below). evaluate() never
+// throws and never allocates; reaction() throws std::bad_alloc only (constraint.hpp).
 // All lengths in m, angles in rad, local point coordinates in the body's frame.
 #include <gearkit/kin/constraint.hpp>
 
@@ -11,6 +18,7 @@ namespace gearkit::kin {
 /// sign convention F_on_a = -lambda; reaction() gives that force at the joint point (a pin).
 class Revolute final : public Constraint {
  public:
+  /// @param a, b  the coinciding points of two bodies, local [m]
   Revolute(BodyPoint a, BodyPoint b) : a_(a), b_(b) {}
   std::string kind() const override { return "revolute"; }
   int equations() const override { return 2; }
@@ -32,6 +40,8 @@ class Revolute final : public Constraint {
 /// about P.
 class Prismatic final : public Constraint {
  public:
+  /// @param slider, guide  P and Q, local [m]; @param axis_local  the guide's direction (guide
+  /// frame, normalised here); @param relative_angle  theta_slider - theta_guide kept [rad]
   Prismatic(BodyPoint slider, BodyPoint guide, Eigen::Vector2d axis_local, double relative_angle);
   std::string kind() const override { return "prismatic"; }
   int equations() const override { return 2; }
@@ -53,6 +63,7 @@ class Prismatic final : public Constraint {
 /// reaction(): the slot's normal force -lambda n on the pin at P (a pin: no moment).
 class PinInSlot final : public Constraint {
  public:
+  /// @param pin, slot  P and Q, local [m]; @param axis_local  the slot's direction (slot frame)
   PinInSlot(BodyPoint pin, BodyPoint slot, Eigen::Vector2d axis_local);
   std::string kind() const override { return "pin_in_slot"; }
   int equations() const override { return 1; }
@@ -78,6 +89,9 @@ class PinInSlot final : public Constraint {
 /// reaction(): the normal force N side n on the circle body at the contact point C - side r n.
 class Contact final : public Constraint {
  public:
+  /// @param circle  the circle's centre C, local [m]; @param radius  [m], >= 0
+  /// @param line  Q on the line, local [m]; @param axis_local  its direction (line frame)
+  /// @param side  +1 or -1, the side of the line the circle is on
   /// @throws std::invalid_argument if radius < 0 or side is not +1 or -1.
   Contact(BodyPoint circle, double radius, BodyPoint line, Eigen::Vector2d axis_local, int side);
   std::string kind() const override { return "contact"; }
@@ -91,7 +105,7 @@ class Contact final : public Constraint {
   double radius() const { return radius_; }
   int side() const { return side_; }
   /// The contact point [m] and the unit normal (from the line towards the circle) in the ground
-  /// frame for the states of the two bodies.
+  /// frame for the states of the two bodies. Never throw.
   Eigen::Vector2d contact_point(const BodyState& circle, const BodyState& line) const;
   Eigen::Vector2d normal(const BodyState& line) const;
 
@@ -114,6 +128,8 @@ struct Motion {
 /// T = -lambda [N m].
 class AngleDriver final : public Constraint {
  public:
+  /// @param body, reference  body indices (either may be kGround)
+  /// @param motion  speed [rad/s] and acceleration [rad/s^2] of f(t); f0 is the analysis' input
   AngleDriver(int body, int reference, Motion motion) : body_(body), reference_(reference), motion_(motion) {}
   std::string kind() const override { return "angle_driver"; }
   int equations() const override { return 1; }
@@ -132,6 +148,8 @@ class AngleDriver final : public Constraint {
 /// u applied to the slider: F = -lambda [N].
 class DisplacementDriver final : public Constraint {
  public:
+  /// @param slider, guide  P and Q, local [m]; @param axis_local  u (guide frame, normalised)
+  /// @param motion  speed [m/s] and acceleration [m/s^2] of f(t)
   DisplacementDriver(BodyPoint slider, BodyPoint guide, Eigen::Vector2d axis_local, Motion motion);
   std::string kind() const override { return "displacement_driver"; }
   int equations() const override { return 1; }
@@ -149,7 +167,9 @@ class DisplacementDriver final : public Constraint {
 /// One row v . (P - Q) of a projection constraint, where v = A(theta_guide) v_local, P is on body
 /// 0 and Q on body 1 of the input. Writes phi (without any offset), the 6 Jacobian entries and
 /// gamma into row `row` of `out`. Shared by prismatic, pin-in-slot, displacement drivers and
-/// the cam follower element.
+/// the cam follower element. Never throws, never allocates.
+/// @param p_local, q_local  P and Q, local [m]; @param v_local  v in body 1's frame
+/// @param row  the row of `out` written
 void projection_row(const ConstraintInput& in, const Eigen::Vector2d& p_local, const Eigen::Vector2d& q_local,
                     const Eigen::Vector2d& v_local, int row, ConstraintOutput& out);
 

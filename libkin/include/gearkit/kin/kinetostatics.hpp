@@ -96,15 +96,20 @@ struct FreeBody {
 /// The free-body diagrams of every moving body from a force analysis at the same state: joint
 /// reactions (normal and friction parts named), the drivers' efforts, elements (their generalised
 /// forces, about the body's frame origin), weights, inertia forces and the loads.
+/// @param forces  solve_forces' result at this data
+/// @throws DataMismatch if `data` was not made for `model` as it is now.
 std::vector<FreeBody> free_bodies(const Model& model, const Data& data, const ForceAnalysis& forces);
 
-/// Generalised applied and inertia forces Q* at the current state (unknown loads left out).
+/// Generalised applied and inertia forces Q* [N, N m per coordinate] at the current state
+/// (unknown loads left out). @throws DataMismatch if `data` was not made for `model`.
 Eigen::VectorXd applied_forces(const Model& model, const Data& data);
 
 /// Potential energy of gravity and springs [J] at data.q (for energy balances).
+/// @throws DataMismatch if `data` was not made for `model` as it is now.
 double potential_energy(const Model& model, const Data& data);
 
 /// Kinetic energy [J] at data.q, data.qd.
+/// @throws DataMismatch if `data` was not made for `model` as it is now.
 double kinetic_energy(const Model& model, const Data& data);
 
 /// Full kinetostatic analysis; stores lambda in data.lambda. Needs a factorised Jacobian at a
@@ -114,13 +119,16 @@ double kinetic_energy(const Model& model, const Data& data);
 /// the frictionless ones (a warning says so).
 /// When the drivers' given efforts cannot determine the unknown loads (they do no work in the
 /// motion, or friction locks it) the loads are NaN and a warning says why.
+/// @param driver  index in Model::drivers() (the friction analysis' sense of motion)
+/// @throws DataMismatch if `data` was not made for `model` as it is now.
 /// @throws std::runtime_error if Phi_q is singular there (a dead point: the driving effort is
 /// unbounded).
-/// @throws std::invalid_argument if the unknown loads are not as many as the given efforts.
+/// @throws std::invalid_argument if the unknown loads are not as many as the given efforts, or
+///   (with friction) `driver` is not an index of Model::drivers().
 ForceAnalysis solve_forces(const Model& model, Data& data, int driver = 0);
 
 /// The same into `f`, whose storage (reactions, multipliers) is reused: a sweep analyses every
-/// position without allocating them again.
+/// position without allocating them again. @throws as the function above.
 void solve_forces(const Model& model, Data& data, int driver, ForceAnalysis& f);
 
 }  // namespace gearkit::kin

@@ -28,7 +28,7 @@ struct Body {
   Eigen::Vector2d position_guess = Eigen::Vector2d::Zero();
   double angle_guess = 0.0;
 
-  /// Local coordinates of a named point, or nullopt.
+  /// Local coordinates [m] of a named point, or nullopt. Never throws.
   std::optional<Eigen::Vector2d> point(const std::string& point_name) const;
 };
 
@@ -97,12 +97,16 @@ struct Spring {
 
 class Model {
  public:
-  /// Adds a moving body. @returns its index. @throws std::invalid_argument on a duplicate name.
+  /// Adds a moving body (points, centre of mass [m], mass [kg], inertia [kg m^2], drawn pose [m,
+  /// rad]). @returns its index. @throws std::invalid_argument on a duplicate name.
   int add_body(Body body);
   /// Adds a constraint. Drivers are also listed in drivers(). @returns its index.
-  /// @throws std::invalid_argument if it names a body index out of range or its name repeats.
+  /// @throws std::invalid_argument if it is null, names a body index out of range or its name
+  ///   repeats.
   int add_constraint(std::string name, std::shared_ptr<const Constraint> constraint);
   /// Marks constraint `constraint` (a driver) with what it drives and its default value.
+  /// @param constraint  index in constraints() of a driver; @param value  default f0 [rad or m]
+  /// @throws std::invalid_argument if that constraint is no driver.
   void set_driver(int constraint, DriverQuantity quantity, double value);
 
   /// Adds Coulomb friction to a joint. @throws std::invalid_argument if the constraint is not a
@@ -113,6 +117,9 @@ class Model {
   /// @throws std::invalid_argument if the index is out of range.
   void set_driver_effort(int driver, double effort);
 
+  /// Loads and gravity: forces [N] at body points [m], torques [N m], springs [N/m, m, N],
+  /// gravity [m/s^2]. Not checked against the bodies when added; free to change after a Data is
+  /// made. @throws std::bad_alloc only.
   void add_force(PointForce f) { forces_.push_back(std::move(f)); }
   void add_torque(BodyTorque t) { torques_.push_back(std::move(t)); }
   void add_spring(Spring s) { springs_.push_back(std::move(s)); }
@@ -133,12 +140,15 @@ class Model {
 
   int coordinates() const { return 3 * static_cast<int>(bodies_.size()); }
   int equations() const { return equations_; }
-  /// Index of a body by name; kGround for "ground"; nullopt if unknown.
+  /// Index of a body by name; kGround for "ground"; nullopt if unknown. Never throws.
+  /// (body_name: the name of kGround or of an index of bodies(); @throws std::out_of_range for
+  /// any other index.)
   std::optional<int> body_index(const std::string& name) const;
   const std::string& body_name(int index) const;
-  /// Index of a constraint by name, or nullopt.
+  /// Index of a constraint by name, or nullopt. Never throws.
   std::optional<int> constraint_index(const std::string& name) const;
-  /// Global position of the body's points in the pose q (any vector of coordinates).
+  /// Global position [m] of the body's points in the pose q (any vector of coordinates [m, rad]
+  /// with the body's entries). Never throws.
   static Eigen::Vector2d point_position(const Eigen::VectorXd& q, const BodyPoint& p);
   /// True if there are masses, forces, torques or springs to analyse.
   bool has_loads() const;

@@ -47,6 +47,7 @@ struct OutputUnits {
   const char* rate;
   const char* acceleration;
 };
+/// Never throws (the suffixes are string literals).
 OutputUnits output_units(const Output& output);
 
 struct OutputValue {
@@ -56,12 +57,17 @@ struct OutputValue {
 };
 
 /// Value, rate and acceleration at the current data.q, qd, qdd.
-/// @throws std::invalid_argument if a slider_displacement output names no prismatic joint.
+/// @param output  its bodies, points [m] and constraint index must be the model's (not checked
+///   but for the prismatic joint below)
+/// @throws DataMismatch if `data` was not made for `model` as it is now; std::invalid_argument
+///   if a slider_displacement output names no prismatic joint.
 OutputValue evaluate_output(const Model& model, const Data& data, const Output& output);
 
 /// d(output)/d(input) for the coordinate change dq of a unit input change (input_sensitivity).
 /// For a point_speed it is |dP/d(input)|, the speed per unit input speed; NaN for a
 /// point_acceleration.
+/// @param dq  coordinates per unit input [m or rad per rad or m] (input_sensitivity)
+/// @throws DataMismatch, std::invalid_argument as evaluate_output.
 double output_derivative(const Model& model, const Data& data, const Output& output, const Eigen::VectorXd& dq);
 
 }  // namespace gearkit::kin

@@ -97,11 +97,16 @@ struct SweepResult {
 /// point is declared and the sweep stops (it never jumps across a toggle to another branch).
 /// A start on a change point is assembled just past it, nearest data.q. The other drivers keep
 /// their data.inputs values. Bounded: at most ~60 halvings of max_iterations each per sample.
-/// @throws std::invalid_argument for a bad driver index or step <= 0.
+/// Numerical failure (no assembly, a dead point) is reported in the result, never thrown.
+/// @param options  driver index, start/end/step [rad or m, the driver's input unit], solver
+///   options, outputs whose extremes are located
+/// @throws DataMismatch if `data` was not made for `model` as it is now; std::invalid_argument
+///   if options.driver is not an index of Model::drivers() or options.step is not > 0.
 SweepResult sweep(const Model& model, Data& data, const SweepOptions& options);
 
 /// The same into `result`, whose samples are overwritten in place: sweeping the same model
 /// again (an optimiser, an animation) then reuses their storage instead of allocating.
+/// @throws as the function above.
 void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result);
 
 /// Receives each sample as the sweep reaches it, in sweep order. The sample (and its vectors)
@@ -112,6 +117,7 @@ using SampleVisitor = std::function<void(const SweepSample&)>;
 /// The same sweep streamed: each sample goes to `visit` and none is kept (result.samples is
 /// left as it was), so memory does not grow with the number of samples; dead points, extremes
 /// and the outcome are in `result` as above.
+/// @throws as the functions above, and whatever `visit` throws (the sweep stops there).
 void sweep(const Model& model, Data& data, const SweepOptions& options, SweepResult& result, const SampleVisitor& visit);
 
 /// How far from a change point the sweep takes its branch up again [input unit]: far enough
@@ -120,15 +126,21 @@ void sweep(const Model& model, Data& data, const SweepOptions& options, SweepRes
 /// of the step so that no sample is skipped: min(step / 4, max(step / 100, 1e-5)). A sweep that
 /// starts on a change point assembles at twice this past the start (a caller that reaches the
 /// start by continuation from a drawing should stop there to keep the drawing's branch).
+/// Never throws.
 double change_point_offset(const SweepOptions& options);
 
 /// The number of samples the sweep plans: floor(|end - start| / step) + 1 (fewer if it stops at
-/// a dead point). Requires options.step > 0.
+/// a dead point). Requires options.step > 0 (not checked: the result is meaningless otherwise).
+/// Never throws.
 long sweep_sample_count(const SweepOptions& options);
 
 /// Assembles at input `value` of driver `driver` (starting from data.q), then solves velocity
 /// and acceleration. @returns the position report; qd/qdd are valid only if it converged and
 /// the Jacobian is regular.
+/// @param driver  index in Model::drivers()
+/// @param value  the driver's input [rad or m]
+/// @throws DataMismatch if `data` was not made for `model` as it is now; std::invalid_argument
+///   if `driver` is not an index of Model::drivers().
 PositionReport solve_at(const Model& model, Data& data, int driver, double value, const SolverOptions& options = {});
 
 }  // namespace gearkit::kin

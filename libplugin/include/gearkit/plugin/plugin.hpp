@@ -55,7 +55,7 @@ class HostServices {
  public:
   /// The element type a loaded plugin registered under `name` (e.g. "gear_mesh"), or nullptr;
   /// pass it to gearkit::mechanism::load_mechanism so that a command reads every mechanism file
-  /// `gearkit kin` reads.
+  /// `gearkit kin` reads. Never throws.
   virtual const mechanism::ElementTypeSpec* find_element_type(std::string_view name) const = 0;
 
  protected:
@@ -83,22 +83,28 @@ struct CommandSpec {
 /// Handed to gearkit_plugin_register: the plugin adds its commands and element types.
 class PluginRegistrar {
  public:
+  /// Adds a command. Nothing is checked here: the host checks everything the plugin registered
+  /// when gearkit_plugin_register returns (PluginHost::load), and refuses the whole plugin
+  /// then. @throws std::bad_alloc only.
   virtual void add_command(CommandSpec command) = 0;
   /// Adds an element type for mechanism files. Defined inline in
   /// <gearkit/mechanism/element_type.hpp>, which a plugin with element types includes: it
   /// passes the element ABI fingerprint of the plugin's build along for the host to check.
+  /// Checked like add_command, after registration. @throws std::bad_alloc only.
   void add_element_type(mechanism::ElementTypeSpec element);
 
  protected:
   ~PluginRegistrar() = default;
-  /// Reads `element` only if `element_abi` is the host's kElementAbi.
+  /// Reads `element` only if `element_abi` is the host's kElementAbi (else the plugin is refused
+  /// after registration). @throws std::bad_alloc only.
   virtual void add_element_type_built_with(std::uint64_t element_abi, mechanism::ElementTypeSpec& element) = 0;
 };
 
 namespace abi {
 
 /// FNV-1a over a list of sizes and offsets: equal lists give equal fingerprints, and a changed
-/// size or offset changes it (with overwhelming probability).
+/// size or offset changes it (with overwhelming probability). Never throws (constexpr).
+/// @param layout  sizes and offsets [bytes]
 constexpr std::uint64_t fingerprint(std::initializer_list<std::size_t> layout) {
   std::uint64_t h = 14695981039346656037ull;
   for (std::size_t v : layout)

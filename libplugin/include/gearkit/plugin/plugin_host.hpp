@@ -26,6 +26,7 @@ namespace gearkit::plugin {
 /// A plugin file that could not be loaded. what() is "plugin 'FILE': REASON".
 class PluginError : public std::runtime_error {
  public:
+  /// @param file  the plugin file; @param reason  one line, what was expected and what found
   PluginError(const std::filesystem::path& file, const std::string& reason);
   ~PluginError() override;
   const std::filesystem::path& file() const { return file_; }
@@ -54,15 +55,20 @@ struct BuiltinNames {
 /// Where plugins are looked for, in order: each entry of GEARKIT_PLUGIN_PATH (':'-separated,
 /// folders or files; empty entries ignored), then `<exe dir>/../lib/gearkit/plugins` (the build
 /// tree and the install share this layout).
+/// @param executable  the running executable's path (current_executable()); empty: only the
+///   environment's entries. @throws std::bad_alloc only (relative entries are returned as they
+///   are; load_all refuses them).
 std::vector<std::filesystem::path> default_plugin_locations(const std::filesystem::path& executable);
 
-/// The path of the running executable (/proc/self/exe), or empty if unknown.
+/// The path of the running executable (/proc/self/exe), or empty if unknown. @throws
+/// std::bad_alloc only.
 std::filesystem::path current_executable();
 
 /// Loads plugins and keeps them loaded for the life of the host (their code backs the
 /// registered commands and element types). Not copyable. Serves HostServices to commands.
 class PluginHost final : public HostServices {
  public:
+  /// @param builtins  names no plugin may register. @throws std::bad_alloc only.
   explicit PluginHost(BuiltinNames builtins = {});
   ~PluginHost();
   PluginHost(const PluginHost&) = delete;
@@ -82,13 +88,14 @@ class PluginHost final : public HostServices {
   /// Copies of an already loaded plugin further down the path are skipped; other failures
   /// are added to failures(), one per file, and do not stop the scan. Folders that do not
   /// exist are skipped silently (the install folder is absent from a build tree); a relative
-  /// location is not searched and is added to failures().
+  /// location is not searched and is added to failures(). Never throws a PluginError (each is
+  /// collected); @throws std::bad_alloc only.
   void load_all(const std::vector<std::filesystem::path>& locations);
 
   /// The files load_all could not load, with the reason, in the order met.
   const std::vector<PluginError>& failures() const { return failures_; }
   const std::vector<LoadedPlugin>& plugins() const { return plugins_; }
-  /// nullptr if no plugin registers `name`.
+  /// nullptr if no plugin registers `name`. Never throws (nor does find_element_type).
   const CommandSpec* find_command(std::string_view name) const;
   const mechanism::ElementTypeSpec* find_element_type(std::string_view name) const override;
   const std::map<std::string, CommandSpec, std::less<>>& commands() const { return commands_; }
