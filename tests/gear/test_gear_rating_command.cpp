@@ -461,7 +461,7 @@ TEST(GearRatingCli, ScuffingInEveryFormat) {
   EXPECT_NEAR(s["S_intS"].get<double>(), s["theta_intS_C"].get<double>() / s["theta_int_C"].get<double>(), 1e-12);
   EXPECT_EQ(s["pinion_gear"], 1);
   EXPECT_EQ(s["oil_type"], "mineral");
-  for (const char* format : {"text", "csv", "md", "html"}) {
+  for (const char* format : {"text", "csv --table all", "md", "html"}) {
     const CliRun r = run(kStage3 + kOil + "--format " + format);
     ASSERT_EQ(r.status, 0) << format << r.err;
     EXPECT_NE(r.out.find("Scuffing: ISO/TS 6336-21"), std::string::npos) << format;

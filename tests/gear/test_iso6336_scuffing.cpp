@@ -284,7 +284,7 @@ TEST(ScuffingRating, PinionIsTheSmallerGearWhicheverIsGearOne) {
   EXPECT_EQ(q.scuffing->pinion, 1);
   for (auto f : {&gg::ScuffingRating::eps_1, &gg::ScuffingRating::eps_2, &gg::ScuffingRating::X_BE, &gg::ScuffingRating::X_eps,
                  &gg::ScuffingRating::mu_mC, &gg::ScuffingRating::w_Bt, &gg::ScuffingRating::rho_redC, &gg::ScuffingRating::theta_intS}) {
-    EXPECT_NEAR(q.scuffing->*f, p.scuffing->*f, 1e-9 * std::fabs(p.scuffing->*f));
+    EXPECT_NEAR((*q.scuffing).*f, (*p.scuffing).*f, 1e-9 * std::fabs((*p.scuffing).*f));
   }
   EXPECT_NEAR(q.scuffing->theta_flaE * q.scuffing->X_Ca, p.scuffing->theta_flaE * p.scuffing->X_Ca, 1e-9 * p.scuffing->theta_flaE);
   EXPECT_NEAR(q.scuffing->C_eff / p.scuffing->C_eff, p.c_gamma_alpha / q.c_gamma_alpha, 1e-12);
