@@ -249,6 +249,20 @@ void validate_face_load(const FaceLoadInput& f) {
   require(f.planets >= 1, "face_load", [&] { return fmt::format("expected at least 1 planet on the sun, found {}", f.planets); });
 }
 
+void validate_scuffing(const RatingInput& in) {
+  const ScuffingInput& s = in.scuffing;
+  if (!s.fzg_stage) return;
+  require(*s.fzg_stage >= 1 && *s.fzg_stage <= 14, "fzg_stage", [&] { return fmt::format("expected an FZG load stage 1..14, found {}", *s.fzg_stage); });
+  require(std::isfinite(s.theta_oil), "theta_oil", [&] { return std::string("the scuffing rating needs the oil temperature (deg C)"); });
+  require(s.theta_oil > -40.0 && s.theta_oil < 200.0, "theta_oil", [&] { return fmt::format("expected an oil temperature in (-40, 200) deg C, found {}", s.theta_oil); });
+  require(std::isfinite(s.nu_100), "nu_100", [&] { return std::string("the scuffing rating needs the oil's kinematic viscosity at 100 C (mm^2/s)"); });
+  require(s.nu_100 > 0.0 && s.nu_100 < in.nu_40, "nu_100", [&] {
+    return fmt::format("expected a viscosity at 100 C > 0 and below the one at 40 C ({} mm^2/s), found {}", in.nu_40, s.nu_100);
+  });
+  require(std::isfinite(s.rho_15) && s.rho_15 > 0.5 && s.rho_15 < 2.0, "rho_15", [&] { return fmt::format("expected an oil density in (0.5, 2) kg/dm^3, found {}", s.rho_15); });
+  require(std::isfinite(s.S_Smin) && s.S_Smin > 0.0, "S_Smin", [&] { return fmt::format("expected S_Smin > 0, found {}", s.S_Smin); });
+}
+
 }  // namespace
 
 void validate(const RatingInput& in) {
@@ -263,6 +277,7 @@ void validate(const RatingInput& in) {
   });
   require(std::isfinite(in.life_h) && in.life_h > 0.0, "life_h", [&] { return fmt::format("expected a life > 0 h, found {}", in.life_h); });
   require(std::isfinite(in.nu_40) && in.nu_40 > 0.0, "nu_40", [&] { return fmt::format("expected a viscosity > 0 mm^2/s, found {}", in.nu_40); });
+  validate_scuffing(in);
   require(std::isfinite(in.S_Hmin) && in.S_Hmin > 0.0, "S_Hmin", [&] { return fmt::format("expected S_Hmin > 0, found {}", in.S_Hmin); });
   require(std::isfinite(in.S_Fmin) && in.S_Fmin > 0.0, "S_Fmin", [&] { return fmt::format("expected S_Fmin > 0, found {}", in.S_Fmin); });
   require(in.Q_v == 0 || (in.Q_v >= 3 && in.Q_v <= 16), "Q_v", [&] { return fmt::format("expected an AGMA quality number 3..16, found {}", in.Q_v); });
@@ -401,6 +416,7 @@ PairRating rate_gear_pair(const GearPairInput& geometry_input, const GearPairRes
       case RatingMethod::lewis_hertz: r = detail::rate_lewis_hertz(m, in); break;
     }
   }
+  detail::scuffing_of_mesh(m, in, r);
   r.imposed = in.factors;
   const FaceLoadInput& f = in.face_load;
   if (in.method == RatingMethod::iso6336 && f.model == FaceLoadModel::pinion_shaft && f.has_shaft() && std::isnan(f.K_prime) &&

@@ -41,6 +41,10 @@ PairRating rate_iso6336(const Mesh& m, const RatingInput& in);
 PairRating rate_agma(const Mesh& m, const RatingInput& in);
 PairRating rate_lewis_hertz(const Mesh& m, const RatingInput& in);
 
+/// The integral temperature scuffing rating of the mesh into r.scuffing (needs r's K factors and
+/// stiffness; nothing without RatingInput::scuffing.fzg_stage).
+void scuffing_of_mesh(const Mesh& m, const RatingInput& in, PairRating& r);
+
 /// Warnings for safety factors below their minimum and damage sums above 1.
 void safety_warnings(const RatingInput& in, PairRating& r);
 

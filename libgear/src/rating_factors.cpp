@@ -13,7 +13,8 @@ constexpr std::array<std::string_view, kFactorCount> kNames = {
     "Z_NT1", "Z_NT2", "Z_W1", "Z_W2",
     "Y_F1", "Y_F2", "Y_S1", "Y_S2", "Y_beta", "Y_B1", "Y_B2", "Y_DT",
     "Y_NT1", "Y_NT2", "Y_deltarelT1", "Y_deltarelT2", "Y_RrelT1", "Y_RrelT2", "Y_X1", "Y_X2", "Y_M1", "Y_M2",
-    "K_s1", "K_s2", "K_m", "K_B1", "K_B2", "K_R", "J1", "J2", "I", "Y_N1", "Y_N2", "Z_N1", "Z_N2", "C_H", "C_f", "Y1", "Y2"};
+    "K_s1", "K_s2", "K_m", "K_B1", "K_B2", "K_R", "J1", "J2", "I", "Y_N1", "Y_N2", "Z_N1", "Z_N2", "C_H", "C_f", "Y1", "Y2",
+    "X_WrelT"};
 
 bool ends_with_1(std::string_view s) { return !s.empty() && s.back() == '1'; }
 

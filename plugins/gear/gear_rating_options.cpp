@@ -230,6 +230,31 @@ void read_surface_and_lubrication(const io::po::variables_map& vm, gg::RatingInp
   }
 }
 
+// The oil for scuffing (ISO/TS 6336-21): rated when --fzg-stage is given.
+void read_scuffing_options(const io::po::variables_map& vm, gg::RatingInput& r) {
+  namespace iso = gg::iso6336;
+  gg::ScuffingInput& s = r.scuffing;
+  if (given(vm, "fzg-stage")) s.fzg_stage = whole(vm, "fzg-stage", 1, 14);
+  if (given(vm, "oil-temperature")) {
+    s.theta_oil = quantity(vm, "oil-temperature", io::Quantity::dimensionless, "");
+    if (!(s.theta_oil > -40.0 && s.theta_oil < 200.0)) fail("oil-temperature", fmt::format("expected -40 < T < 200 deg C, found {}", text_of(vm, "oil-temperature").substr(0, 60)));
+  }
+  if (given(vm, "oil-viscosity-100")) s.nu_100 = positive(vm, "oil-viscosity-100");
+  if (given(vm, "oil-density")) s.rho_15 = positive(vm, "oil-density");
+  if (given(vm, "oil-type")) {
+    std::map<std::string, iso::OilBase> names;
+    for (iso::OilBase b : iso::kOilBases) names[iso::to_string(b)] = b;
+    s.oil = choice(vm, "oil-type", names);
+  }
+  if (given(vm, "lubrication")) {
+    std::map<std::string, iso::Lubrication> names;
+    for (iso::Lubrication l : iso::kLubrications) names[iso::to_string(l)] = l;
+    s.lubrication = choice(vm, "lubrication", names);
+  }
+  if (given(vm, "driving-gear")) s.gear1_driving = whole(vm, "driving-gear", 1, 2) == 1;
+  if (given(vm, "min-safety-scuffing")) s.S_Smin = positive(vm, "min-safety-scuffing");
+}
+
 void read_method_options(const io::po::variables_map& vm, gg::RatingInput& r) {
   if (given(vm, "method")) {
     r.method = choice<gg::RatingMethod>(vm, "method", {{"iso6336", gg::RatingMethod::iso6336}, {"agma", gg::RatingMethod::agma},
@@ -284,6 +309,14 @@ void add_rating_options(io::po::options_description& desc) {
       ("tip-chamfer1", text()->value_name("LEN"), "radial tip chamfer h_K1, d_Na1 = d_a1 - 2 h_K1 (bare number: mm)")
       ("tip-chamfer2", text()->value_name("LEN"), "radial tip chamfer h_K2 (bare number: mm)")
       ("oil-viscosity", text()->value_name("NU40"), "kinematic viscosity at 40 C, a plain number (default 220) (bare number: mm^2/s)")
+      ("oil-viscosity-100", text()->value_name("NU100"), "scuffing: kinematic viscosity at 100 C, a plain number (bare number: mm^2/s)")
+      ("oil-temperature", text()->value_name("TEMP"), "scuffing: oil temperature (sump or injection), a plain number (bare number: deg C)")
+      ("oil-density", text()->value_name("RHO15"), "scuffing: oil density at 15 C, a plain number (default 0.89) (bare number: kg/dm^3)")
+      ("oil-type", text()->value_name("mineral|pao|pag|pag-water-soluble|phosphate-ester|traction"), "scuffing: base oil, the lubricant factor X_L (default mineral)")
+      ("fzg-stage", text()->value_name("STAGE"), "scuffing: failure load stage 1..14 of the oil in the FZG test A/8.3/90 (ISO 14635-1); rates scuffing by ISO/TS 6336-21")
+      ("lubrication", text()->value_name("dip|spray|immersed"), "scuffing: lubrication method, X_S (default dip)")
+      ("driving-gear", text()->value_name("1|2"), "scuffing: the gear that drives, for the approach factor X_Q (default 1)")
+      ("min-safety-scuffing", text()->value_name("S"), "required S_intS (default 2.0)")
       ("flank-roughness", text()->value_name("LEN[,LEN2]"), "flank roughness R_a of both gears or gear 1,gear 2 (default 0.5 um: R_z = 3 um) (bare number: um)")
       ("flank-rz", text()->value_name("LEN[,LEN2]"), "flank roughness R_z, instead of --flank-roughness (bare number: um)")
       ("root-roughness", text()->value_name("LEN[,LEN2]"), "root roughness R_z of both gears or gear 1,gear 2 (default 10 um) (bare number: um)")
@@ -329,7 +362,8 @@ bool any_rating_option(const io::po::variables_map& vm) {
                           "tip-relief", "shaft-span", "pinion-offset", "shaft-diameter", "shaft-arrangement", "stiffening", "torque-share",
                           "helix-modification", "rim1", "rim2", "min-safety-pitting", "min-safety-bending", "root-shift", "agma-quality",
                           "reliability", "mounting", "lewis-profile", "factor", "torque2", "life-cycles", "usable-tip-diameter1",
-                          "usable-tip-diameter2", "tip-chamfer1", "tip-chamfer2"}) {
+                          "usable-tip-diameter2", "tip-chamfer1", "tip-chamfer2", "oil-viscosity-100", "oil-temperature", "oil-density",
+                          "oil-type", "fzg-stage", "lubrication", "driving-gear", "min-safety-scuffing"}) {
     if (given(vm, key)) return true;
   }
   return vm["limited-pitting"].as<bool>() || vm["optimum-long-life"].as<bool>() || vm["crowned"].as<bool>() ||
@@ -344,6 +378,7 @@ gg::RatingInput read_rating_options(const io::po::variables_map& vm) {
   read_face_load_options(vm, r);
   read_surface_and_lubrication(vm, r);
   read_method_options(vm, r);
+  read_scuffing_options(vm, r);
   read_tips(vm, r);
   return r;
 }
@@ -375,7 +410,8 @@ std::string option_for_rating_field(const std::string& field) {
       {"reliability", "reliability"}, {"factor", "factor"}, {"R_z_flank", "flank-roughness"}, {"R_z_root", "root-roughness"},
       {"s_R", "rim1"}, {"face_load", "shaft-span"}, {"tooth_root", "x1"}, {"spectrum", "life"}, {"T_2", "torque2"}, {"N_L1", "life-cycles"},
       {"d_Na1", "usable-tip-diameter1"}, {"d_Na2", "usable-tip-diameter2"}, {"h_K1", "tip-chamfer1"}, {"h_K2", "tip-chamfer2"},
-      {"s_pr", "protuberance"}, {"A_sne", "thickness-allowances1"}};
+      {"s_pr", "protuberance"}, {"A_sne", "thickness-allowances1"}, {"fzg_stage", "fzg-stage"}, {"theta_oil", "oil-temperature"},
+      {"nu_100", "oil-viscosity-100"}, {"rho_15", "oil-density"}, {"S_Smin", "min-safety-scuffing"}};
   const auto it = options.find(field);
   return it == options.end() ? field : it->second;
 }

@@ -168,6 +168,58 @@ nlohmann::json gear_rating_json(const gg::GearRating& g) {
   return j;
 }
 
+// The integral temperature rating of the mesh (ISO/TS 6336-21), docs/rating.md "Scuffing".
+void scuffing_rows(io::Table& t, const gg::RatingInput& in, const gg::ScuffingRating& s) {
+  namespace iso = gg::iso6336;
+  const gg::ScuffingInput& oil = in.scuffing;
+  auto row = [&t](std::string name, std::string v) { t.add_row({std::move(name), std::move(v)}); };
+  row("oil", fmt::format("{}, nu_40 = {:g}, nu_100 = {:g} mm^2/s, rho_15 = {:g} kg/dm^3, FZG A/8.3/90 stage {}", iso::to_string(oil.oil),
+                         in.nu_40, oil.nu_100, oil.rho_15, *oil.fzg_stage));
+  row("oil temperature theta_oil [C]", num(oil.theta_oil, 1));
+  row(fmt::format("lubrication ({}) X_S", iso::to_string(oil.lubrication)), num(s.X_S, 2));
+  row("pinion of the standard (index 1)", fmt::format("gear {}", s.pinion + 1));
+  row("addendum contact ratios eps_1 / eps_2", num(s.eps_1) + " / " + num(s.eps_2));
+  row("helical load factor K_Bgamma", num(s.K_Bgamma));
+  row("transverse unit load w_Bt [N/mm]", num(s.w_Bt, 2));
+  row("relative radius at the pitch point rho_redC [mm]", num(s.rho_redC, 3));
+  row("oil viscosity at theta_oil nu [mm^2/s] / eta [mPa s]", num(s.nu_oil, 2) + " / " + num(s.eta_oil, 2));
+  for (auto [name, v] : {std::pair{"roughness factor X_R", s.X_R}, {"lubricant factor X_L", s.X_L}, {"mean friction coefficient mu_mC", s.mu_mC},
+                         {"running-in factor X_E", s.X_E}, {"thermo-elastic factor X_M", s.X_M}, {"pressure angle factor X_alphabeta", s.X_alphabeta},
+                         {"geometry factor X_BE", s.X_BE}, {"approach factor X_Q", s.X_Q}}) {
+    row(name, num(v));
+  }
+  row("tip relief C_a / effective C_eff [um]", num(s.C_a, 2) + " / " + num(s.C_eff, 2));
+  row("tip relief factor X_Ca", num(s.X_Ca));
+  row("contact ratio factor X_eps", num(s.X_eps));
+  row("flash temperature at the pinion tip theta_flaE [K]", num(s.theta_flaE, 2));
+  row("mean flash temperature theta_flaint [K]", num(s.theta_flaint, 2));
+  row("bulk temperature theta_M [C]", num(s.theta_M, 2));
+  row("integral temperature theta_int [C]", num(s.theta_int, 2));
+  row("FZG test torque T_1T [N m]", num(s.T_1T, 1));
+  row("relative welding factor X_WrelT", num(s.X_WrelT));
+  row("scuffing integral temperature theta_intS [C]", num(s.theta_intS, 2));
+  row("scuffing safety S_intS", num(s.S_intS, 3));
+  row("safety on the transmitted load S_SL", num(s.S_SL, 3));
+}
+
+nlohmann::json scuffing_json(const gg::RatingInput& in, const gg::ScuffingRating& s) {
+  const gg::ScuffingInput& oil = in.scuffing;
+  nlohmann::json j = {{"method", "ISO/TS 6336-21 integral temperature"}, {"fzg_stage", *oil.fzg_stage},
+                      {"oil_type", gg::iso6336::to_string(oil.oil)}, {"lubrication", gg::iso6336::to_string(oil.lubrication)},
+                      {"pinion_gear", s.pinion + 1}};
+  const std::pair<const char*, double> values[] = {
+      {"theta_oil_C", oil.theta_oil}, {"nu_40_mm2_s", in.nu_40}, {"nu_100_mm2_s", oil.nu_100}, {"rho_15_kg_dm3", oil.rho_15},
+      {"eps_1", s.eps_1}, {"eps_2", s.eps_2}, {"K_Bgamma", s.K_Bgamma}, {"w_Bt_N_mm", s.w_Bt}, {"v_SigmaC_m_s", s.v_SigmaC},
+      {"rho_redC_mm", s.rho_redC}, {"nu_oil_mm2_s", s.nu_oil}, {"eta_oil_mPa_s", s.eta_oil}, {"X_R", s.X_R}, {"X_L", s.X_L},
+      {"mu_mC", s.mu_mC}, {"X_E", s.X_E}, {"X_M", s.X_M}, {"X_alphabeta", s.X_alphabeta}, {"X_BE", s.X_BE}, {"X_Q", s.X_Q},
+      {"C_a_um", s.C_a}, {"C_eff_um", s.C_eff}, {"X_Ca", s.X_Ca}, {"X_eps", s.X_eps}, {"X_S", s.X_S}, {"X_WrelT", s.X_WrelT},
+      {"theta_flaE_K", s.theta_flaE}, {"theta_flaint_K", s.theta_flaint}, {"theta_M_C", s.theta_M}, {"theta_int_C", s.theta_int},
+      {"T_1T_Nm", s.T_1T}, {"theta_MT_C", s.theta_MT}, {"theta_flaintT_K", s.theta_flaintT}, {"theta_intS_C", s.theta_intS},
+      {"S_intS", s.S_intS}, {"S_SL", s.S_SL}, {"S_Smin", oil.S_Smin}};
+  for (const auto& [k, v] : values) put(j, k, v);
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json rating_json(const gg::RatingInput& in, const gg::PairRating& r) {
@@ -199,6 +251,7 @@ nlohmann::json rating_json(const gg::RatingInput& in, const gg::PairRating& r) {
   }
   for (const auto& [k, v] : r.extra) put(j, k, v);
   j["gears"] = {gear_rating_json(r.gear[0]), gear_rating_json(r.gear[1])};
+  if (r.method == gg::RatingMethod::iso6336) j["scuffing"] = r.scuffing ? scuffing_json(in, *r.scuffing) : nlohmann::json(nullptr);
   return j;
 }
 
@@ -210,6 +263,11 @@ void add_rating_report(io::Report& report, const gg::RatingInput& in, const gg::
   gear_rows(gears, r);
   report.tables.push_back(std::move(pair));
   report.tables.push_back(std::move(gears));
+  if (r.scuffing) {
+    io::Table scuffing{"Scuffing: ISO/TS 6336-21, integral temperature", {"quantity", "value"}, {}};
+    scuffing_rows(scuffing, in, *r.scuffing);
+    report.tables.push_back(std::move(scuffing));
+  }
   report.notes.push_back(fmt::format("Materials: gear 1 {} (sigma_Hlim {:g} MPa, sigma_Flim {:g} MPa), gear 2 {} ({:g}, {:g} MPa); "
                                      "required S_Hmin = {:g}, S_Fmin = {:g}.",
                                      in.material[0].name, in.material[0].sigma_Hlim, in.material[0].sigma_Flim,
@@ -223,6 +281,10 @@ void add_rating_report(io::Report& report, const gg::RatingInput& in, const gg::
     auto mm = [](const std::optional<double>& A) { return A ? fmt::format("{:.4f}", *A) : std::string("table"); };
     report.notes.push_back(fmt::format("Tooth root (Y_F, Y_S): generating shift x_E = x + A_sne/(2 m_n tan alpha_n) from the upper "
                                        "tooth thickness allowances A_sne = {} / {} mm of the inspection.", mm(in.A_sne[0]), mm(in.A_sne[1])));
+  }
+  if (r.method == gg::RatingMethod::iso6336 && !r.scuffing) {
+    report.notes.push_back("Scuffing (ISO/TS 6336-21): not rated; it needs the oil's FZG load stage, its viscosity at 100 C and the oil "
+                           "temperature (docs/rating.md, \"Scuffing\").");
   }
   for (const auto& w : r.warnings) report.warnings.push_back(w);
   report.json["rating"] = rating_json(in, r);

@@ -121,11 +121,48 @@ void read_per_gear_keys(MapReader& r, gg::RatingInput& in, std::map<std::string,
   if (r.has("protuberance1")) marks["s_pr"] = r.mark("protuberance1");
 }
 
+// The oil for scuffing (ISO/TS 6336-21; docs/rating.md "Scuffing").
+void read_scuffing_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, io::SourceMark>& marks) {
+  namespace iso = gg::iso6336;
+  gg::ScuffingInput& s = in.scuffing;
+  if (r.has("fzg_stage")) {
+    const long long stage = r.integer("fzg_stage");
+    if (stage < 1 || stage > 14) io::fail_at(r.mark("fzg_stage"), fmt::format("expected an FZG load stage 1..14, found {}", stage));
+    s.fzg_stage = static_cast<int>(stage);
+  }
+  s.theta_oil = r.optional_number("oil_temperature").value_or(s.theta_oil);
+  s.nu_100 = r.optional_number("oil_viscosity_100").value_or(s.nu_100);
+  s.rho_15 = r.optional_number("oil_density").value_or(s.rho_15);
+  if (r.has("oil_type")) {
+    std::vector<std::string> names;
+    for (iso::OilBase b : iso::kOilBases) names.emplace_back(iso::to_string(b));
+    const std::string name = r.choice("oil_type", names);
+    for (iso::OilBase b : iso::kOilBases) if (name == iso::to_string(b)) s.oil = b;
+  }
+  if (r.has("lubrication")) {
+    std::vector<std::string> names;
+    for (iso::Lubrication l : iso::kLubrications) names.emplace_back(iso::to_string(l));
+    const std::string name = r.choice("lubrication", names);
+    for (iso::Lubrication l : iso::kLubrications) if (name == iso::to_string(l)) s.lubrication = l;
+  }
+  if (r.has("driving_gear")) s.gear1_driving = r.choice("driving_gear", {"1", "2"}) == "1";
+  s.S_Smin = r.optional_number("min_safety_scuffing").value_or(s.S_Smin);
+  for (auto [field, key] : {std::pair{"fzg_stage", "fzg_stage"}, {"theta_oil", "oil_temperature"}, {"nu_100", "oil_viscosity_100"},
+                            {"rho_15", "oil_density"}, {"S_Smin", "min_safety_scuffing"}}) {
+    if (r.has(key)) marks[field] = r.mark(key);
+  }
+  // Oil data the stage needs but the file lacks is reported at the stage.
+  for (auto [field, key] : {std::pair{"theta_oil", "oil_temperature"}, {"nu_100", "oil_viscosity_100"}}) {
+    if (r.has("fzg_stage") && !r.has(key)) marks[field] = r.mark("fzg_stage");
+  }
+}
+
 void read_rating_keys(MapReader& r, gg::RatingInput& in, std::map<std::string, io::SourceMark>& marks) {
   auto um = [](MapReader& m, const char* key) { return m.quantity(key, Quantity::length, "um") * 1e6; };
   read_accuracy(r, in);
   marks["quality"] = r.mark("quality");
   in.nu_40 = r.optional_number("oil_viscosity").value_or(in.nu_40);
+  read_scuffing_keys(r, in, marks);
   if (r.has("flank_roughness") && r.has("flank_rz")) io::fail_at(r.mark("flank_rz"), "give flank_roughness (R_a) or flank_rz, not both");
   if (r.has("flank_roughness")) in.R_z_flank.fill(6.0 * um(r, "flank_roughness"));
   if (r.has("flank_rz")) in.R_z_flank.fill(um(r, "flank_rz"));

@@ -35,9 +35,17 @@ void read_accuracy(io::MapReader& r, gearkit::gear::RatingInput& in);
 ///         consistency of the values is checked by the rating (RatingError "face_load").
 void read_face_load(io::MapReader& r, gearkit::gear::FaceLoadInput& f);
 
+/// Reads the oil for scuffing (docs/rating.md, "Scuffing"): fzg_stage (1..14), oil_temperature
+/// (deg C), oil_viscosity_100 (mm^2/s), oil_density (kg/dm^3), oil_type (mineral | pao | pag |
+/// pag-water-soluble | phosphate-ester | traction), lubrication (dip | spray | immersed),
+/// driving_gear (1 | 2), min_safety_scuffing. Keys not given keep `in`'s values; `marks` gets the
+/// fields fzg_stage, theta_oil, nu_100, rho_15, S_Smin. Does not call r.finish().
+/// @throws io::InputError at the offending key.
+void read_scuffing_keys(io::MapReader& r, gearkit::gear::RatingInput& in, std::map<std::string, io::SourceMark>& marks);
+
 /// Reads the rating keys of a gear-pair file from the mapping `r` into `in` (one reader for a pair
 /// file's top level and a train mesh's `rating:`; docs/rating.md): quality, iso1328_edition,
-/// oil_viscosity, flank_roughness | flank_rz, protuberance, root_roughness, deviations {f_pb,
+/// oil_viscosity, the scuffing keys (read_scuffing_keys), flank_roughness | flank_rz, protuberance, root_roughness, deviations {f_pb,
 /// f_falpha, F_betax, f_ma, f_sh, tip_relief}, face_load, min_safety_pitting, min_safety_bending,
 /// limited_pitting, optimum_long_life, factors. Keys not given keep `in`'s values; `marks` gets
 /// where each RatingInput field was written. Does not call r.finish().

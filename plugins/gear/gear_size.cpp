@@ -63,6 +63,7 @@ gg::SizingInput read_sizing(const io::po::variables_map& vm) {
   if (!vm.count("ratio")) fail("ratio", "is required: the gear ratio z2/z1");
   if (!rating_requested(vm)) fail("torque1", "the sizing needs the load: --torque1 or --power (with --speed1)");
   s.load = read_rating_options(vm);
+  if (s.load.scuffing.fzg_stage) fail("fzg-stage", "gear size does not size for scuffing: rate the chosen pair with gearkit gear");
   if (!s.load.quality && std::isnan(s.load.f_pb)) s.load.quality = 6;
   s.ratio = number("ratio", vm["ratio"].as<std::string>());
   auto opt_number = [&](const char* key, double& field) {

@@ -59,7 +59,8 @@ struct RatingData {
 constexpr std::pair<const char*, const char*> kFieldKeys[] = {
     {"quality", "quality"}, {"life_h", "life"}, {"K_A", "application_factor"}, {"K_gamma", "load_sharing"},
     {"nu_40", "oil_viscosity"}, {"R_z_flank", "flank_roughness"}, {"R_z_root", "root_roughness"},
-    {"S_Hmin", "min_safety_pitting"}, {"S_Fmin", "min_safety_bending"}, {"method", "method"}};
+    {"S_Hmin", "min_safety_pitting"}, {"S_Fmin", "min_safety_bending"}, {"method", "method"}, {"fzg_stage", "fzg_stage"},
+    {"theta_oil", "oil_temperature"}, {"nu_100", "oil_viscosity_100"}, {"rho_15", "oil_density"}, {"S_Smin", "min_safety_scuffing"}};
 
 void read_section(io::MapReader& r, RatingData& d) {
   const std::string method = r.choice("method", {"iso6336", "agma", "lewis-hertz"}, "iso6336");
@@ -70,6 +71,7 @@ void read_section(io::MapReader& r, RatingData& d) {
   d.base.K_A = r.optional_number("application_factor").value_or(1.0);
   d.K_gamma = r.optional_number("load_sharing");
   d.base.nu_40 = r.optional_number("oil_viscosity").value_or(d.base.nu_40);
+  plugins::gear::read_scuffing_keys(r, d.base, d.marks);
   if (r.has("flank_roughness")) d.base.R_z_flank.fill(6.0e6 * r.quantity("flank_roughness", io::Quantity::length, "um"));
   if (r.has("root_roughness")) d.base.R_z_root.fill(1.0e6 * r.quantity("root_roughness", io::Quantity::length, "um"));
   d.base.S_Hmin = r.optional_number("min_safety_pitting").value_or(d.base.S_Hmin);
@@ -362,6 +364,20 @@ void report_meshes(io::Report& report, const std::vector<MeshRating>& rated) {
   report.json["rating"] = {{"meshes", list}, {"weakest", weakest_text}};
 }
 
+// Scuffing of the meshes rated for it (ISO/TS 6336-21; the oil keys of `rating:`): a table only
+// when one is, the details in each mesh's JSON "scuffing".
+void report_scuffing(io::Report& report, const std::vector<MeshRating>& rated) {
+  io::Table t{"Scuffing of the meshes: ISO/TS 6336-21, integral temperature",
+              {"mesh", "theta_flaint [K]", "theta_int [C]", "theta_intS [C]", "S_intS", "S_Smin"}, {}};
+  for (const auto& m : rated) {
+    if (!m.rating.scuffing) continue;
+    const gg::ScuffingRating& s = *m.rating.scuffing;
+    t.add_row({m.mesh, io::fixed(s.theta_flaint, 2), io::fixed(s.theta_int, 2), io::fixed(s.theta_intS, 2), io::fixed(s.S_intS, 3),
+               io::fixed(m.input.scuffing.S_Smin, 2)});
+  }
+  if (!t.rows.empty()) report.tables.push_back(std::move(t));
+}
+
 }  // namespace
 
 void add_mesh_ratings(io::Report& report, const std::string& file, const gt::TrainModel& model, const gt::SpeedSolution& speeds,
@@ -390,6 +406,7 @@ void add_mesh_ratings(io::Report& report, const std::string& file, const gt::Tra
     }
   }
   report_meshes(report, rated);
+  report_scuffing(report, rated);
   note_helix_hands(report, rated);
 }
 

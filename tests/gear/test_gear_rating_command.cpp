@@ -433,3 +433,78 @@ TEST(GearRatingCli, PairFilePerGearKeys) {
       EXPECT_DOUBLE_EQ(f["rating"]["gears"][i][k].get<double>(), o["rating"]["gears"][i][k].get<double>()) << k;
   EXPECT_DOUBLE_EQ(f["rating"]["gears"][1]["Y_M"].get<double>(), 0.7);
 }
+
+namespace {
+
+// The KISSsoft 03/2017 stage_03 pair (tests/gear/kisssoft_stage3.hpp) with the report's load, its
+// printed K factors imposed and its oil (section 5 of the report: mineral, nu_40 220, nu_100 19
+// mm^2/s, 80 C, dip lubrication, FZG stage 14, R_a 0.6 um).
+const std::string kStage3 = "--z1 24 --z2 95 --module 14 --helix-angle 10 --centre-distance 861 --x1 0.48 --face-width 360 "
+                            "--torque1 40953N*m --speed1 1165.9rpm --application-factor 1.25 --material1 18CrNiMo7-6 "
+                            "--material2 18CrNiMo7-6 --quality 6 --iso1328-edition 1995 --flank-roughness 0.6 "
+                            "--factor K_v=1.092 --factor K_Hbeta=1.15 --factor K_Halpha=1.069 --factor K_Falpha=1.069 ";
+const std::string kOil = "--fzg-stage 14 --oil-viscosity 220 --oil-viscosity-100 19 --oil-temperature 80 ";
+
+}  // namespace
+
+// Scuffing by the integral temperature: a table in every format and `rating.scuffing` in JSON, with
+// the report's printed theta_flaint 16.25 K, theta_int 115.75 C, X_BE 0.230, X_eps 0.263 (theta_flaint
+// 0.3 % lower: gearkit's stiffer mesh without the web-blank factor, test_iso6336_scuffing.cpp).
+TEST(GearRatingCli, ScuffingInEveryFormat) {
+  const CliRun j = run(kStage3 + kOil + "--format json");
+  ASSERT_EQ(j.status, 0) << j.err;
+  const auto s = nlohmann::json::parse(j.out)["rating"]["scuffing"];
+  EXPECT_NEAR(s["theta_flaint_K"].get<double>(), 16.25, 0.005 * 16.25);
+  EXPECT_NEAR(s["theta_int_C"].get<double>(), 115.75, 0.15);
+  EXPECT_NEAR(s["X_BE"].get<double>(), 0.230, 0.0005);
+  EXPECT_NEAR(s["X_eps"].get<double>(), 0.263, 0.0005);
+  EXPECT_NEAR(s["S_intS"].get<double>(), s["theta_intS_C"].get<double>() / s["theta_int_C"].get<double>(), 1e-12);
+  EXPECT_EQ(s["pinion_gear"], 1);
+  EXPECT_EQ(s["oil_type"], "mineral");
+  for (const char* format : {"text", "csv --table all", "md", "html"}) {
+    const CliRun r = run(kStage3 + kOil + "--format " + format);
+    ASSERT_EQ(r.status, 0) << format << r.err;
+    EXPECT_NE(r.out.find("Scuffing: ISO/TS 6336-21"), std::string::npos) << format;
+    EXPECT_NE(r.out.find("scuffing safety S_intS"), std::string::npos) << format;
+    EXPECT_NE(r.out.find("integral temperature theta_int [C]"), std::string::npos) << format;
+  }
+  // Spray lubrication heats the bulk more (X_S = 1.2): a lower safety.
+  const auto spray = nlohmann::json::parse(run(kStage3 + kOil + "--lubrication spray --format json").out)["rating"]["scuffing"];
+  EXPECT_LT(spray["S_intS"].get<double>(), s["S_intS"].get<double>());
+}
+
+// Without the oil's FZG stage scuffing is not rated, and says so; with it, missing oil data is an
+// error naming the option.
+TEST(GearRatingCli, ScuffingNeedsTheOil) {
+  const CliRun text = run(kStage3);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("Scuffing (ISO/TS 6336-21): not rated"), std::string::npos);
+  EXPECT_TRUE(nlohmann::json::parse(run(kStage3 + "--format json").out)["rating"]["scuffing"].is_null());
+  expect_error(run(kStage3 + "--fzg-stage 12 --oil-viscosity-100 19"), "'--oil-temperature'");
+  expect_error(run(kStage3 + "--fzg-stage 12 --oil-temperature 70"), "'--oil-viscosity-100'");
+  expect_error(run(kStage3 + kOil + "--fzg-stage 15"), "'--fzg-stage'");
+  expect_error(run(kStage3 + kOil + "--oil-type castor"), "'--oil-type'");
+  expect_error(run(kStage3 + kOil + "--oil-viscosity-100 300"), "'--oil-viscosity-100'");
+  expect_error(run(kStage3 + kOil + "--oil-temperature 400"), "'--oil-temperature'");
+  expect_error(run("size --ratio 3.5 --torque1 500N*m --speed1 1450rpm --material1 18CrNiMo7-6 --material2 18CrNiMo7-6 " + kOil),
+               "'--fzg-stage'");
+}
+
+// The pair file's oil keys give the rating the options give.
+TEST(GearRatingCli, ScuffingFromAPairFile) {
+  const std::string file = write("scuffing.yaml",
+      "z1: 24\nz2: 95\nmodule: 14\nhelix_angle: 10\ncentre_distance: 861\nx1: 0.48\nface_width: 360\n"
+      "materials: {gear1: 18CrNiMo7-6, gear2: 18CrNiMo7-6}\nquality: 6\niso1328_edition: 1995\nflank_roughness: 0.6 um\n"
+      "factors: {K_v: 1.092, K_Hbeta: 1.15, K_Halpha: 1.069, K_Falpha: 1.069}\n"
+      "oil_viscosity: 220\noil_viscosity_100: 19\noil_temperature: 80\nfzg_stage: 14\noil_type: mineral\nlubrication: dip\n"
+      "load: {torque1: 40953 N*m, speed1: 1165.9 rpm, application_factor: 1.25}\n");
+  const CliRun f = run("'" + file + "' --format json");
+  ASSERT_EQ(f.status, 0) << f.err;
+  const auto o = nlohmann::json::parse(run(kStage3 + kOil + "--format json").out)["rating"]["scuffing"];
+  const auto p = nlohmann::json::parse(f.out)["rating"]["scuffing"];
+  for (const char* k : {"theta_int_C", "theta_intS_C", "S_intS", "mu_mC"}) EXPECT_DOUBLE_EQ(p[k].get<double>(), o[k].get<double>()) << k;
+  const std::string bad = write("bad_scuffing.yaml",
+      "z1: 24\nz2: 95\nmodule: 14\nface_width: 60\nmaterials: {gear1: 18CrNiMo7-6, gear2: 18CrNiMo7-6}\nquality: 6\n"
+      "oil_viscosity_100: 19\noil_temperature: 80\nfzg_stage: 20\nload: {torque1: 400 N*m, speed1: 1000 rpm}\n");
+  expect_error(run("'" + bad + "'"), "bad_scuffing.yaml:9:");
+}

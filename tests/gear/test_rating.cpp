@@ -578,39 +578,9 @@ TEST(IsoTr6336_30Example1, HelixCorrectionAndSunModel) {
   }
 }
 
-namespace {
-
-// KISSsoft 03/2017 report "stage_03" (helical pair, ISO 6336:2006 method B; kisssoft_stage3.hpp):
-// case-carburized 18CrNiMo7-6 (sigma_Hlim 1500, sigma_Flim 430 MPa), 5000 kW at 1165.9 1/min,
-// K_A = 1.25, 175 200 h, VG 220, R_z 4.8 um flank / 20 um root, S_Hmin = 1.25, S_Fmin = 1.56.
-// Y_F, Y_S "calculated with profile shift x" (the nominal one: no allowance here).
+// KISSsoft 03/2017 report "stage_03" (helical pair, ISO 6336:2006 method B; kisssoft_stage3.hpp).
 using gearkit::testing::kisssoft_stage3_geometry;
-
-gg::RatingInput kisssoft_stage3_load() {
-  gg::RatingInput r;
-  r.n_1 = 12255.788e6 / (60.0 * 175200.0);  // 1165.885 1/min: the report's N_L1 (it prints n rounded, 1165.9)
-  r.T_1 = 5.0e6 / (r.n_1 * std::numbers::pi / 30.0);  // 5000 kW: T_1 = 40953.0 N m as printed
-  r.K_A = 1.25;
-  gg::Material m = gg::material_of_class(gg::MaterialClass::case_carburized, gg::QualityGrade::MQ, 700.0, "18CrNiMo7-6");
-  m.sigma_Hlim = 1500.0;
-  m.sigma_Flim = 430.0;
-  r.material = {m, m};
-  r.life_h = 175200.0;
-  r.nu_40 = 220.0;
-  r.R_z_flank = {4.8, 4.8};
-  r.R_z_root = {20.0, 20.0};
-  r.S_Hmin = 1.25;
-  r.S_Fmin = 1.56;
-  // The report's K factors: K_Hbeta user-specified 1.150; K_v = 1.092 and K_Halpha = K_Falpha =
-  // 1.069 come from its web-blank factor C_R = 0.898, which gearkit does not model (solid blanks).
-  r.factors.set(gg::Factor::K_v, 1.092);
-  r.factors.set(gg::Factor::K_Hbeta, 1.150);
-  r.factors.set(gg::Factor::K_Halpha, 1.069);
-  r.factors.set(gg::Factor::K_Falpha, 1.069);
-  return r;
-}
-
-}  // namespace
+using gearkit::testing::kisssoft_stage3_load;
 
 // Tooth root, factor by factor (section 3). At the printed precision: s_Fn, rho_F (the 30-degree
 // tangent), d_en (the load point, to 1 um), q_s, Y_F, Y_beta, the permissible-stress factors,

@@ -281,3 +281,31 @@ TEST(TrainRating, AWiderGearCarriesItsRootOverItsOwnFace) {
   EXPECT_NEAR(wide[0]["sigma_F_MPa"].get<double>(), narrow[0]["sigma_F_MPa"].get<double>(), 1e-9);  // the planet: its own 20 mm
   EXPECT_NEAR(wide[1]["sigma_H_MPa"].get<double>(), narrow[1]["sigma_H_MPa"].get<double>(), 1e-9);
 }
+
+// The oil's FZG stage in `rating:` rates every mesh for scuffing (ISO/TS 6336-21): a table and
+// each mesh's JSON `scuffing`. The ring mesh (planet against a concave ring) runs cooler than the
+// sun mesh at the same tangential force (larger relative radius, slower sliding); a missing oil
+// temperature is an error.
+TEST(TrainRating, ScuffingOfEveryMesh) {
+  const std::string oil = "application_factor: 1.25\n  fzg_stage: 12\n  oil_temperature: 70\n  oil_viscosity_100: 19";
+  const std::string file = edited("scuffing.yaml", "application_factor: 1.25", oil);
+  const CliRun r = run("'" + file + "' --torque sun=40N*m --rate --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto meshes = nlohmann::json::parse(r.out)["rating"]["meshes"];
+  ASSERT_EQ(meshes.size(), 2u);
+  const auto& sun = meshes[0]["scuffing"];
+  const auto& ring = meshes[1]["scuffing"];
+  ASSERT_TRUE(sun.is_object() && ring.is_object());
+  EXPECT_GT(ring["rho_redC_mm"].get<double>(), sun["rho_redC_mm"].get<double>());
+  EXPECT_LT(ring["theta_flaE_K"].get<double>(), sun["theta_flaE_K"].get<double>());
+  EXPECT_GT(sun["S_intS"].get<double>(), 1.0);
+  const CliRun text = run("'" + file + "' --torque sun=40N*m --rate");
+  EXPECT_NE(text.out.find("Scuffing of the meshes"), std::string::npos) << text.out;
+  // Without the oil temperature: an error naming where the rating's oil is.
+  int line = 0;
+  const std::string no_temp = edited("scuffing_no_temp.yaml", "application_factor: 1.25",
+                                     "application_factor: 1.25\n  fzg_stage: 12\n  oil_viscosity_100: 19", &line);
+  const CliRun bad = run("'" + no_temp + "' --torque sun=40N*m --rate");
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_NE(bad.err.find("oil temperature"), std::string::npos) << bad.err;
+}

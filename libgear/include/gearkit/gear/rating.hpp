@@ -10,6 +10,7 @@
 #include <gearkit/gear/gear_pair.hpp>
 #include <gearkit/gear/iso6336_life.hpp>
 #include <gearkit/gear/iso6336_load.hpp>
+#include <gearkit/gear/iso6336_scuffing.hpp>
 #include <gearkit/gear/materials.hpp>
 
 #include <array>
@@ -47,6 +48,8 @@ enum class Factor : int {
   Y_NT1, Y_NT2, Y_deltarelT1, Y_deltarelT2, Y_RrelT1, Y_RrelT2, Y_X1, Y_X2, Y_M1, Y_M2,
   // AGMA (Shigley chapter 14) and Lewis
   K_s1, K_s2, K_m, K_B1, K_B2, K_R, J1, J2, I, Y_N1, Y_N2, Z_N1, Z_N2, C_H, C_f, Y1, Y2,
+  // scuffing (ISO/TS 6336-21)
+  X_WrelT,
   count
 };
 constexpr int kFactorCount = static_cast<int>(Factor::count);
@@ -97,6 +100,32 @@ struct FaceLoadInput {
   iso6336::HelixModification modification = iso6336::HelixModification::none;
   /// True when any shaft data is given (l > 0, or K' imposed).
   bool has_shaft() const { return l > 0.0 || !std::isnan(K_prime); }
+};
+
+/// The oil and how it is used, for the scuffing rating by the integral temperature method
+/// (ISO/TS 6336-21, iso6336_scuffing.hpp). Scuffing is rated when the oil's FZG load stage is
+/// given; the oil temperature and nu_100 are then required (RatingError "theta_oil", "nu_100").
+struct ScuffingInput {
+  std::optional<int> fzg_stage;  ///< failure load stage of the oil in the FZG test A/8.3/90 (ISO 14635-1), 1..14
+  double theta_oil = std::numeric_limits<double>::quiet_NaN();  ///< oil temperature (sump or injection), deg C
+  double nu_100 = std::numeric_limits<double>::quiet_NaN();     ///< kinematic viscosity at 100 C, mm^2/s (< nu_40)
+  double rho_15 = 0.89;  ///< density of the oil at 15 C, kg/dm^3 (0.5 .. 2)
+  iso6336::OilBase oil = iso6336::OilBase::mineral;
+  iso6336::Lubrication lubrication = iso6336::Lubrication::dip;
+  bool gear1_driving = true;  ///< which gear drives (the approach factor X_Q)
+  double S_Smin = 2.0;        ///< required minimum S_intS
+};
+
+/// The integral temperature rating of the mesh (ISO/TS 6336-21); the symbols of iso6336_scuffing.hpp,
+/// index 1 the standard's pinion (`pinion` = 0 or 1: which gear of the pair it is).
+struct ScuffingRating {
+  int pinion = 0;
+  double eps_1 = 0, eps_2 = 0, K_Bgamma = 1, w_Bt = 0, v_SigmaC = 0, rho_redC = 0;
+  double nu_oil = 0, eta_oil = 0, X_R = 1, X_L = 1, mu_mC = 0, X_E = 1, X_M = 0, X_alphabeta = 1, X_BE = 0, X_Q = 1;
+  double C_a = 0, C_eff = 0, X_Ca = 1, X_eps = 0, X_S = 1, X_WrelT = 1;
+  double theta_flaE = 0, theta_flaint = 0, theta_M = 0, theta_int = 0;  ///< K (flash), deg C
+  double T_1T = 0, theta_MT = 0, theta_flaintT = 0, theta_intS = 0;     ///< N m, deg C, K, deg C
+  double S_intS = 0, S_SL = 0;
 };
 
 struct RatingInput {
@@ -161,6 +190,7 @@ struct RatingInput {
   AgmaMounting agma_mounting = AgmaMounting::commercial;
   bool agma_crowned = false;
   LewisProfile lewis_profile = LewisProfile::hobbed;
+  ScuffingInput scuffing;  ///< the oil for scuffing (ISO method only; not rated without the FZG stage)
   ImposedFactors factors;
 };
 
@@ -191,6 +221,7 @@ struct PairRating {
   double eps_alpha = 0, eps_beta = 0, eps_gamma = 0;
   double T_eq = NAN;  ///< equivalent torque of a spectrum for pitting of gear 1 (N m)
   std::array<GearRating, 2> gear;
+  std::optional<ScuffingRating> scuffing;  ///< empty: not rated (no FZG stage, or not the ISO method)
   std::vector<std::pair<std::string, double>> extra;
   ImposedFactors imposed;  ///< which factors were imposed (copy of the input's)
   std::vector<std::string> warnings;
