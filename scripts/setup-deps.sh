@@ -20,6 +20,10 @@ packages=(
   libginac-dev
   chromium librecad poppler-utils   # ctest render.html_and_pdf: HTML pages in a browser, DXF to PDF
 )
+# The Python module (python/, docs/python.md; CMake option GEARKIT_PYTHON): pybind11 to build it,
+# NumPy for its arrays, pandas for Sweep.to_dataframe(), for Debian's /usr/bin/python3.
+python_packages=(pybind11-dev python3-dev python3-numpy python3-pandas)
+packages+=("${python_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
