@@ -45,7 +45,7 @@ def python_sweep_with_dataframe(m):
 def cli_sweep(exe):
     with open(os.devnull, "w") as null:
         t = time.perf_counter()
-        subprocess.run([exe, "kin", FOUR_BAR, "--sweep", "0:359.99:0.01", "--format", "csv"], stdout=null, check=True)
+        subprocess.run([exe, "kin", FOUR_BAR, "--sweep", "0:359.99:0.01", "--format", "csv"], stdout=null, stderr=null, check=True)
         return time.perf_counter() - t
 
 

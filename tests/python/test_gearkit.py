@@ -68,8 +68,8 @@ class GearPairTest(unittest.TestCase):
             self.assertAlmostEqual(gear.d_b_mm / 2, r_b, delta=0.005)
             self.assertAlmostEqual(gear.d_a_mm / 2, r_a, delta=0.005)
             self.assertAlmostEqual(gear.d_f_mm / 2, r_f, delta=0.005)
-            self.assertAlmostEqual(gear.e_mm, e, delta=0.005)
-            self.assertAlmostEqual(gear.s_mm, s, delta=0.005)
+            self.assertAlmostEqual(gear.e_mm, e, delta=0.01)  # the seed cuts e and s to 2 decimals (12.5956 -> 12.59)
+            self.assertAlmostEqual(gear.s_mm, s, delta=0.01)
             self.assertAlmostEqual(gear.p_mm, 28.27, delta=0.005)
         self.assertAlmostEqual(g.pair.centre_distance_mm, 225.0, places=9)
         self.assertAlmostEqual(g.pair.alpha_wt_deg, 20.0, places=9)
@@ -228,7 +228,8 @@ class MechanismTest(unittest.TestCase):
         self.assertTrue(s.q.flags.c_contiguous)
         np.testing.assert_allclose(s.input, np.arange(361) * DEG, rtol=0, atol=1e-12)
         theta4 = np.unwrap(s.output("theta4"))
-        np.testing.assert_allclose(theta4, np.unwrap(rocker_angle(s.input)), rtol=0, atol=1e-9)
+        # to the solver's Newton tolerance (positions to about 1e-10 m over link lengths of 0.1 m)
+        np.testing.assert_allclose(theta4, np.unwrap(rocker_angle(s.input)), rtol=0, atol=1e-8)
         # The rate by central differences of the hand angle at the crank speed 25 rad/s.
         h = 1e-6
         rate = 25 * (rocker_angle(s.input + h) - rocker_angle(s.input - h)) / (2 * h)
