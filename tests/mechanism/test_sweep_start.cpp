@@ -63,8 +63,9 @@ TEST(SweepStart, ReachesTheStartOnTheDrawingsBranch) {
     const double theta4 = data.q(3 * rocker + 2), expected = rocker_angle(near, above);
     // data.q is the approach's last sample, up to one 2 deg step short of `near` (the sweep's first
     // Newton solve starts from it), so it is on the branch but not exactly at the start: within
-    // 0.01 rad of the hand value there, where the other branch is over 2 rad away.
-    EXPECT_NEAR(std::remainder(theta4 - expected, 2 * std::numbers::pi), 0.0, 0.01) << "above " << above;
+    // 0.05 rad of the hand value there (2 deg of crank times a rocker ratio below 1.5), where the
+    // other branch is over 2 rad away.
+    EXPECT_NEAR(std::remainder(theta4 - expected, 2 * std::numbers::pi), 0.0, 0.05) << "above " << above;
     EXPECT_GT(std::abs(std::remainder(theta4 - rocker_angle(near, -above), 2 * std::numbers::pi)), 1.0) << "above " << above;
   }
 }
