@@ -5,6 +5,7 @@
 #include <gearkit/io/progress.hpp>
 #include <gearkit/kin/fourbar.hpp>
 #include <gearkit/kin/instant_centre.hpp>
+#include <gearkit/mechanism/sweep_start.hpp>
 
 #include <fmt/format.h>
 
@@ -19,41 +20,8 @@ std::string shown(const mechanism::Mechanism& mech, int driver, double v) {
   return fmt::format("{:.6g} {}", shown_input(mech, driver, v), input_unit(mech, driver));
 }
 
-// A sweep of the driver from `from` to `to` by `step`, dead points located to 1e-9 of its span;
-// positions only unless `velocities`; the other branch at change points if `switch_branch`.
-kin::SweepOptions sweep_options(int driver, double from, double to, double step, bool velocities,
-                                bool switch_branch) {
-  kin::SweepOptions o;
-  o.switch_branch = switch_branch;
-  o.driver = driver;
-  o.start = from;
-  o.end = to;
-  o.step = step;
-  o.velocities = velocities;
-  o.min_step = 1e-9 * std::max(1.0, std::abs(to - from));
-  return o;
-}
-
-// Moves `data` from the drawing to just past the sweep's start (kin::change_point_offset) by
-// continuation, so that the sweep's first Newton solve starts next to the start on the
-// drawing's own branch: from the drawing itself Newton may jump to another branch, and at a
-// start on a change point it could not tell which branch the drawing is on. Left at the drawing
-// when the way is blocked (a dead point: the sweep's own fallbacks then apply).
-void approach_start(const mechanism::Mechanism& mech, kin::Data& data, int driver, const kin::SweepOptions& sweep) {
-  const double drawn = data.inputs(driver), direction = sweep.end >= sweep.start ? 1.0 : -1.0;
-  const double near = sweep.start + direction * 2.0 * kin::change_point_offset(sweep);
-  const double step = angular(mech, driver) ? 2.0 * std::numbers::pi / 180.0 : 0.002;
-  if (std::abs(near - drawn) <= 1e-12 * std::max(1.0, std::abs(drawn))) return;
-  const Eigen::VectorXd drawn_q = data.q;
-  const kin::SweepResult s = kin::sweep(mech.model, data, sweep_options(driver, drawn, near, std::min(step, std::abs(near - drawn)), false, false));
-  if (s.complete) {
-    data.q = s.samples.back().q;
-    data.inputs(driver) = near;
-    return;
-  }
-  data.q = drawn_q;
-  data.inputs(driver) = drawn;
-}
+using mechanism::approach_start;  // shared with the Python module (mechanism/sweep_start.hpp)
+using mechanism::sweep_options;
 
 // The workspace a swept sample is analysed in (outputs, reactions): the sweep's own when it is
 // factorised there (SweepSample::data; nothing in describe_position refactorises it, except the

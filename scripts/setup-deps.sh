@@ -32,13 +32,17 @@ bench_packages=(
   libbenchmark-dev
   libslvs1-dev                      # SolveSpace's solver, the peer of bench_kin
 )
+# The Python module (python/, docs/python.md; CMake option GEARKIT_PYTHON, off by default): pybind11
+# to build it, NumPy for its arrays, pandas for Sweep.to_dataframe(), for Debian's /usr/bin/python3.
+python_packages=(pybind11-dev python3-dev python3-numpy python3-pandas)
 
 packages=("${build_packages[@]}")
 for arg in "$@"; do
   case "$arg" in
     --test) packages+=("${test_packages[@]}") ;;
     --bench) packages+=("${bench_packages[@]}") ;;
-    *) echo "setup-deps: unknown argument '$arg' (expected --test or --bench)" >&2; exit 2 ;;
+    --python) packages+=("${python_packages[@]}") ;;
+    *) echo "setup-deps: unknown argument '$arg' (expected --test, --bench or --python)" >&2; exit 2 ;;
   esac
 done
 

@@ -128,16 +128,7 @@ void root_allowances(const Request& q, const gg::GearPairResult& table, const gg
     for (int i = 0; i < 2; ++i) rating.A_sne[i] = inspection->gear[i].allowances.A_sne;
     return;
   }
-  if (!q.file || !rating.quality || q.options.input.A_sn1 != 0.0 || q.options.input.A_sn2 != 0.0) return;
-  const int grade = *rating.quality;
-  if (grade < gg::min_grade(rating.iso1328_edition) || grade > gg::max_grade(rating.iso1328_edition)) return;  // the rating names it
-  try {
-    const auto A_sne = upper_allowances_of_grade(q.options.input, table, grade, rating.iso1328_edition);
-    for (int i = 0; i < 2; ++i) rating.A_sne[i] = A_sne[i];
-  } catch (const gg::GeometryError& e) {
-    io::fail_at(mark_for_field(*q.file, "quality"), fmt::format("the tooth thickness allowances of the grade (ISO/TR 10064-2), which the "
-                                                                "root rating uses, cannot be found: {}; give allowance1 and allowance2", e.what()));
-  }
+  if (q.file) grade_allowances(*q.file, table, rating);
 }
 
 [[noreturn]] void fail_field(const Request& q, const std::string& option, const std::string& field, const std::string& message) {

@@ -3,6 +3,7 @@
 #include "gear_rating_yaml.hpp"
 #include "gear_rating_options.hpp"
 
+#include <gearkit/gear/accuracy.hpp>
 #include <gearkit/io/yaml_model.hpp>
 
 #include <fmt/format.h>
@@ -170,6 +171,19 @@ PairFile read_pair_file(const std::string& path) {
   }
   r.finish();
   return f;
+}
+
+void grade_allowances(const PairFile& file, const gg::GearPairResult& table, gg::RatingInput& rating) {
+  if (!rating.quality || file.geometry.A_sn1 != 0.0 || file.geometry.A_sn2 != 0.0) return;
+  const int grade = *rating.quality;
+  if (grade < gg::min_grade(rating.iso1328_edition) || grade > gg::max_grade(rating.iso1328_edition)) return;  // the rating names it
+  try {
+    const auto A_sne = upper_allowances_of_grade(file.geometry, table, grade, rating.iso1328_edition);
+    for (int i = 0; i < 2; ++i) rating.A_sne[i] = A_sne[i];
+  } catch (const gg::GeometryError& e) {
+    io::fail_at(mark_for_field(file, "quality"), fmt::format("the tooth thickness allowances of the grade (ISO/TR 10064-2), which the "
+                                                             "root rating uses, cannot be found: {}; give allowance1 and allowance2", e.what()));
+  }
 }
 
 io::SourceMark mark_for_field(const PairFile& file, const std::string& field) {

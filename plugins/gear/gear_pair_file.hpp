@@ -23,6 +23,11 @@ struct PairFile {
 /// values, unknown keys, unknown materials or factors, and spectrum rows whose shares do not add up to 1.
 PairFile read_pair_file(const std::string& path);
 
+/// The root rating's upper allowances A_sne of a pair file with a grade and no allowance1/2: those
+/// of ISO/TR 10064-2 for its grade (as `--quality` gives them), written into `rating.A_sne`; left
+/// as they are otherwise. @throws io::InputError at the file's `quality` when they cannot be found.
+void grade_allowances(const PairFile& file, const gearkit::gear::GearPairResult& table, gearkit::gear::RatingInput& rating);
+
 /// The place to report a GeometryError / RatingError field of a pair file.
 io::SourceMark mark_for_field(const PairFile& file, const std::string& field);
 
