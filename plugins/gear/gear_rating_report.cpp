@@ -251,7 +251,8 @@ nlohmann::json rating_json(const gg::RatingInput& in, const gg::PairRating& r) {
   }
   for (const auto& [k, v] : r.extra) put(j, k, v);
   j["gears"] = {gear_rating_json(r.gear[0]), gear_rating_json(r.gear[1])};
-  if (r.method == gg::RatingMethod::iso6336) j["scuffing"] = r.scuffing ? scuffing_json(in, *r.scuffing) : nlohmann::json(nullptr);
+  // Not rated (no oil FZG stage given): no key rather than null, which would read as a failed number.
+  if (r.method == gg::RatingMethod::iso6336 && r.scuffing) j["scuffing"] = scuffing_json(in, *r.scuffing);
   return j;
 }
 

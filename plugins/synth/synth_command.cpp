@@ -25,8 +25,7 @@ namespace {
 
 constexpr std::string_view usage =
     "gearkit synth function|motion|path|crank-rocker|dwell FILE.yaml [--mechanism OUT.yaml] "
-    "[--drawing OUT.svg|OUT.dxf] [--plot OUT.svg] [--min-transmission-angle ANGLE] [--seed N] [--evaluations N] [--restarts N] "
-    "[--format text|json|csv|md|html] [--output FILE] [--strict]";
+    "[--drawing OUT.svg|OUT.dxf] [--plot OUT.svg] [options: gearkit synth --help]";
 
 using Task = std::function<Output(const io::YamlDocument&, const Overrides&)>;
 
